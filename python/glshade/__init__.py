@@ -1,0 +1,14 @@
+"""glshade: OpenGL fixed-function, Phong and Blinn-Phong lighting over numpy arrays.
+
+>>> import numpy as np, glshade as gs
+>>> scene = gs.Scene(lights=[gs.Light(position=(1, 2, 3, 1))], material=gs.Material(shininess=32))
+>>> rgba = gs.shade(np.random.rand(1000, 3), np.tile([0, 0, 1.0], (1000, 1)), scene)
+>>> rgba.shape
+(1000, 4)
+"""
+
+from ._glshade import __version__
+from ._scene import Light, Lights, Material, Scene
+from ._shade import shade
+
+__all__ = ["Light", "Lights", "Material", "Scene", "__version__", "shade"]

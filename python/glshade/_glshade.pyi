@@ -1,0 +1,41 @@
+"""Type stub of the native module. Use the `glshade` package: it coerces the arguments."""
+
+from typing import Any
+
+import numpy as np
+from numpy.typing import NDArray
+
+__version__: str
+LIGHT_LAYOUT: list[tuple[str, int]]
+MATERIAL_LAYOUT: list[tuple[str, int]]
+
+def check_lights(lights: NDArray[np.float64]) -> None: ...
+def check_material(material: NDArray[np.float64], name: str) -> None: ...
+def check_scene(
+    lights: NDArray[np.float64],
+    material: NDArray[np.float64],
+    back_material: NDArray[np.float64],
+    global_ambient: NDArray[np.float64],
+    viewer: NDArray[np.float64],
+    specular: str,
+) -> None: ...
+def output_names(two_side: bool, separate_specular: bool) -> list[str]: ...
+def shade(
+    positions: NDArray[np.floating[Any]],
+    normals: NDArray[np.floating[Any]],
+    lights: NDArray[np.float64],
+    material: NDArray[np.float64],
+    back_material: NDArray[np.float64],
+    global_ambient: NDArray[np.float64],
+    viewer: NDArray[np.float64],
+    two_side: bool,
+    separate_specular: bool,
+    specular: str,
+    modelview: NDArray[np.float64] | None,
+    normalize: bool,
+    rescale_normal: bool,
+    colors: NDArray[np.floating[Any]] | None,
+    color_material: str | None,
+    color_material_face: str,
+    out: NDArray[np.floating[Any]] | None,
+) -> NDArray[np.floating[Any]]: ...

@@ -1,0 +1,157 @@
+"""`shade`: the OpenGL lighting equation over arrays of vertices."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import _glshade
+from ._scene import Scene
+
+__all__ = ["shade"]
+
+FloatArray = NDArray[np.floating[Any]]
+
+ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
+
+
+def _float_dtype(value: ArrayLike, name: str) -> np.dtype[Any]:
+    """The dtype `value` computes in: float32 or float64 (float16 widens to float32)."""
+    if not isinstance(value, np.ndarray):
+        return np.dtype(np.float64)
+    kind, size = value.dtype.kind, value.dtype.itemsize
+    if kind == "f" and size <= 4:
+        return np.dtype(np.float32)
+    if kind == "f" and size == 8:
+        return np.dtype(np.float64)
+    raise TypeError(f"{name} must be a float32 or float64 array, got dtype {value.dtype}")
+
+
+def _rows(value: ArrayLike, name: str, dtype: np.dtype[Any]) -> FloatArray:
+    """`value` as a C-contiguous 2-d array of `dtype` (a copy only where needed)."""
+    if not isinstance(value, np.ndarray):
+        value = np.asarray(value)
+        if value.dtype.kind not in "fiu":
+            raise TypeError(f"{name} must be real numbers, got dtype {value.dtype}")
+    if value.ndim != 2:
+        raise ValueError(f"{name} must be a 2-d array of shape (n, 3), got shape {value.shape}")
+    return np.ascontiguousarray(value, dtype=dtype)
+
+
+def shade(
+    positions: ArrayLike,
+    normals: ArrayLike,
+    scene: Scene,
+    *,
+    modelview: ArrayLike | None = None,
+    normalize: bool = False,
+    rescale_normal: bool = False,
+    colors: ArrayLike | None = None,
+    color_material: ColorMaterialMode | None = None,
+    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    out: FloatArray | None = None,
+) -> FloatArray:
+    """Light vertices with OpenGL's fixed-function lighting equation (GL 2.1 section 2.14.1).
+
+    Parameters
+    ----------
+    positions : (n, 3) float32 or float64
+        Vertex positions, in model coordinates (eye coordinates when `modelview` is None).
+    normals : (n, 3) float32 or float64
+        Vertex normals. Used as given, as in GL: a non-unit normal scales the diffuse and
+        specular terms unless `normalize` is set.
+    scene : Scene
+        Lights (in eye coordinates), materials and light model.
+    modelview : (4, 4) float, optional
+        An affine modelview matrix M (row-major, as numpy prints it): positions become
+        ``M @ (p, 1)``, normals ``inv(M[:3, :3]).T @ n`` (GL's normal matrix).
+    normalize : bool
+        ``GL_NORMALIZE``: scale the transformed normals to unit length.
+    rescale_normal : bool
+        ``GL_RESCALE_NORMAL``: scale the transformed normals by M's rescale factor.
+    colors : (n, 3) or (n, 4) float, optional
+        Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1).
+    color_material : {"ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        The material parameter(s) the colours replace; default ``"ambient_and_diffuse"`` (GL's)
+        when `colors` is given.
+    color_material_face : {"front", "back", "front_and_back"}
+        The material(s) the colours replace (GL's default: both).
+    out : ndarray, optional
+        A C-contiguous array of the result's shape and dtype to write into.
+
+    Returns
+    -------
+    (n, 4) or (k, n, 4) ndarray of the computation dtype
+        RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` the
+        result has a leading axis of the ``k`` colours named by ``scene.outputs`` (front and
+        back; primary and secondary; or all four). A vertex whose position, normal or colour
+        is NaN or infinite gets NaN; no other vertex is affected.
+
+    Notes
+    -----
+    The computation runs in float32 when `positions` and `normals` are float32 (or float16)
+    and in float64 when either is float64; Python sequences count as float64. Vertices are
+    shaded in parallel with the GIL released; the result does not depend on the number of
+    threads.
+
+    Raises
+    ------
+    TypeError
+        For integer, complex or other non-float arrays.
+    ValueError
+        For wrong shapes, mismatched lengths, unknown names, a bad `out`, or a singular,
+        projective or non-finite `modelview`.
+
+    Examples
+    --------
+    >>> import numpy as np, glshade as gs
+    >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))])
+    >>> gs.shade(np.zeros((1, 3), np.float32), np.array([[0, 0, 1]], np.float32), scene)
+    array([[0.84, 0.84, 0.84, 1.  ]], dtype=float32)
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    dtype = np.result_type(_float_dtype(positions, "positions"), _float_dtype(normals, "normals"))
+    p = _rows(positions, "positions", dtype)
+    n = _rows(normals, "normals", dtype)
+    c = None
+    if colors is not None:
+        if isinstance(colors, np.ndarray) and colors.dtype.kind not in "fiu":
+            raise TypeError(f"colors must be real numbers, got dtype {colors.dtype}")
+        c = _rows(colors, "colors", dtype)
+        color_material = color_material or "ambient_and_diffuse"
+    m = None
+    if modelview is not None:
+        m = np.asarray(modelview)
+        if m.dtype.kind not in "fiu":
+            raise TypeError(f"modelview must be real numbers, got dtype {m.dtype}")
+        if m.shape != (4, 4):
+            raise ValueError(f"modelview must have shape (4, 4), got {m.shape}")
+        m = np.ascontiguousarray(m, dtype=np.float64)
+    if out is not None and not isinstance(out, np.ndarray):
+        raise TypeError(f"out must be a numpy array, got {type(out)!r}")
+    for name, value in (("color_material", color_material), ("color_material_face", color_material_face)):
+        if value is not None and not isinstance(value, str):
+            raise TypeError(f"{name} must be a string, got {value!r}")
+    result: FloatArray = _glshade.shade(
+        p,
+        n,
+        scene.lights.table,
+        scene.material.row,
+        scene.back_material.row,
+        scene.global_ambient,
+        scene.viewer,
+        scene.two_side,
+        scene.separate_specular,
+        scene.specular,
+        m,
+        bool(normalize),
+        bool(rescale_normal),
+        c,
+        color_material,
+        color_material_face,
+        out,
+    )
+    return result

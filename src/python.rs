@@ -1,0 +1,316 @@
+//! The Python binding, `glshade._glshade`: borrow and check the arrays, release the GIL, call the
+//! core, hand the result back. No arithmetic happens here.
+
+use numpy::{
+    Element, PyArray1, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArray1,
+    PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+use crate::error::{Error, ErrorKind};
+use crate::light::{Light, LIGHT_ROW_LEN};
+use crate::material::{ColorMaterial, Material, MATERIAL_ROW_LEN};
+use crate::prepare::ShadeOptions;
+use crate::real::Real;
+use crate::scene::{Scene, Specular};
+use crate::shade::VertexColors;
+
+fn to_pyerr(e: Error) -> PyErr {
+    match e.kind {
+        ErrorKind::Value => PyValueError::new_err(e.message),
+        ErrorKind::Index => PyIndexError::new_err(e.message),
+    }
+}
+
+/// The rows of a C-contiguous (n, K) array, without copying.
+fn rows<'a, T: Element, const K: usize>(
+    a: &'a PyReadonlyArray2<'_, T>,
+    name: &str,
+) -> PyResult<&'a [[T; K]]> {
+    let shape = a.shape();
+    if shape[1] != K {
+        return Err(PyValueError::new_err(format!(
+            "{name} must have shape (n, {K}), got {shape:?}"
+        )));
+    }
+    if !a.is_c_contiguous() {
+        return Err(PyValueError::new_err(format!(
+            "{name} must be C-contiguous"
+        )));
+    }
+    Ok(a.as_slice()?.as_chunks::<K>().0)
+}
+
+fn lights_from(table: &PyReadonlyArray2<'_, f64>) -> PyResult<Vec<Light>> {
+    Ok(rows::<f64, LIGHT_ROW_LEN>(table, "lights")?
+        .iter()
+        .map(Light::from_row)
+        .collect())
+}
+
+fn material_from(row: &PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<Material> {
+    let values: &[f64; MATERIAL_ROW_LEN] = row.as_slice()?.try_into().map_err(|_| {
+        PyValueError::new_err(format!(
+            "{name} must have {MATERIAL_ROW_LEN} values, got {}",
+            row.len()
+        ))
+    })?;
+    Ok(Material::from_row(values))
+}
+
+fn vec4(v: &PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<[f64; 4]> {
+    v.as_slice()?
+        .try_into()
+        .map_err(|_| PyValueError::new_err(format!("{name} must have 4 values, got {}", v.len())))
+}
+
+/// Checks a light table (one row per light, laid out as `LIGHT_LAYOUT`); raises `ValueError`.
+#[pyfunction]
+fn check_lights(lights: PyReadonlyArray2<'_, f64>) -> PyResult<()> {
+    for (i, light) in lights_from(&lights)?.iter().enumerate() {
+        light.validate(i).map_err(to_pyerr)?;
+    }
+    Ok(())
+}
+
+/// Checks a material row (laid out as `MATERIAL_LAYOUT`); raises `ValueError` naming `name`.
+#[pyfunction]
+fn check_material(material: PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<()> {
+    material_from(&material, name)?
+        .validate(name)
+        .map_err(to_pyerr)
+}
+
+/// The names of the colours `shade` returns for a light model, in output order.
+#[pyfunction]
+fn output_names(two_side: bool, separate_specular: bool) -> Vec<&'static str> {
+    let scene = Scene {
+        two_side,
+        separate_specular,
+        ..Scene::default()
+    };
+    scene.output_names().to_vec()
+}
+
+fn scene_from(
+    lights: &PyReadonlyArray2<'_, f64>,
+    material: &PyReadonlyArray1<'_, f64>,
+    back_material: &PyReadonlyArray1<'_, f64>,
+    global_ambient: &PyReadonlyArray1<'_, f64>,
+    viewer: &PyReadonlyArray1<'_, f64>,
+    two_side: bool,
+    separate_specular: bool,
+    specular: &str,
+) -> PyResult<Scene> {
+    Ok(Scene {
+        lights: lights_from(lights)?,
+        material: material_from(material, "material")?,
+        back_material: material_from(back_material, "back_material")?,
+        global_ambient: vec4(global_ambient, "global_ambient")?,
+        viewer: vec4(viewer, "viewer")?,
+        two_side,
+        separate_specular,
+        specular: Specular::parse(specular).map_err(to_pyerr)?,
+    })
+}
+
+/// Checks a whole scene as `shade` would; raises `ValueError` naming the offending parameter.
+#[pyfunction]
+fn check_scene(
+    lights: PyReadonlyArray2<'_, f64>,
+    material: PyReadonlyArray1<'_, f64>,
+    back_material: PyReadonlyArray1<'_, f64>,
+    global_ambient: PyReadonlyArray1<'_, f64>,
+    viewer: PyReadonlyArray1<'_, f64>,
+    specular: &str,
+) -> PyResult<()> {
+    let scene = scene_from(
+        &lights,
+        &material,
+        &back_material,
+        &global_ambient,
+        &viewer,
+        false,
+        false,
+        specular,
+    )?;
+    scene.validate().map_err(to_pyerr)
+}
+
+/// Every argument of `shade` that does not depend on the dtype.
+struct Call {
+    scene: Scene,
+    options: ShadeOptions,
+}
+
+fn shade_typed<'py, T: Element + Real>(
+    py: Python<'py>,
+    call: &Call,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    out: Option<&Bound<'py, PyUntypedArray>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let cast = |a: &Bound<'py, PyUntypedArray>, name: &str| -> PyResult<PyReadonlyArray2<'py, T>> {
+        let typed = a.cast::<numpy::PyArray2<T>>().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{name} must be a 2-d array of {} like positions, got a {}-d array of {}",
+                numpy::dtype::<T>(py),
+                a.ndim(),
+                a.dtype()
+            ))
+        })?;
+        Ok(typed.readonly())
+    };
+    let positions = cast(positions, "positions")?;
+    let normals = cast(normals, "normals")?;
+    let colors = colors.map(|c| cast(c, "colors")).transpose()?;
+    let n = positions.shape()[0];
+    let (p, nr) = (
+        rows::<T, 3>(&positions, "positions")?,
+        rows::<T, 3>(&normals, "normals")?,
+    );
+    let vertex_colors = match &colors {
+        Some(c) if c.shape()[1] == 3 => Some(VertexColors {
+            data: rows::<T, 3>(c, "colors")?.as_flattened(),
+            width: 3,
+        }),
+        Some(c) => Some(VertexColors {
+            data: rows::<T, 4>(c, "colors")?.as_flattened(),
+            width: 4,
+        }),
+        None => None,
+    };
+    let planes = call.scene.output_count();
+    let shape: Vec<usize> = if planes == 1 {
+        vec![n, 4]
+    } else {
+        vec![planes, n, 4]
+    };
+    let run =
+        |dst: &mut [T]| crate::shade::shade(&call.scene, p, nr, vertex_colors, &call.options, dst);
+    match out {
+        Some(out) => {
+            let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
+                PyTypeError::new_err(format!(
+                    "out must be an array of {}, got {}",
+                    numpy::dtype::<T>(py),
+                    out.dtype()
+                ))
+            })?;
+            if array.shape() != shape.as_slice() {
+                return Err(PyValueError::new_err(format!(
+                    "out must have shape {shape:?}, got {:?}",
+                    array.shape()
+                )));
+            }
+            let mut rw = array
+                .try_readwrite()
+                .map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
+            let dst = rw
+                .as_slice_mut()
+                .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
+            py.detach(|| run(dst)).map_err(to_pyerr)?;
+            Ok(array.clone().into_any())
+        }
+        None => {
+            let mut dst = vec![T::ZERO; planes * n * 4];
+            py.detach(|| run(&mut dst)).map_err(to_pyerr)?;
+            Ok(PyArray1::from_vec(py, dst).reshape(shape)?.into_any())
+        }
+    }
+}
+
+/// Lights the vertices; see `glshade.shade` for the arguments, which arrive here already
+/// coerced (C-contiguous float32 or float64 arrays, light and material tables as float64).
+#[pyfunction]
+#[pyo3(signature = (
+    positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
+    separate_specular, specular, modelview, normalize, rescale_normal, colors, color_material,
+    color_material_face, out
+))]
+fn shade<'py>(
+    py: Python<'py>,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    lights: PyReadonlyArray2<'py, f64>,
+    material: PyReadonlyArray1<'py, f64>,
+    back_material: PyReadonlyArray1<'py, f64>,
+    global_ambient: PyReadonlyArray1<'py, f64>,
+    viewer: PyReadonlyArray1<'py, f64>,
+    two_side: bool,
+    separate_specular: bool,
+    specular: &str,
+    modelview: Option<PyReadonlyArray2<'py, f64>>,
+    normalize: bool,
+    rescale_normal: bool,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    color_material: Option<&str>,
+    color_material_face: &str,
+    out: Option<&Bound<'py, PyUntypedArray>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let modelview = match &modelview {
+        Some(m) => {
+            let r = rows::<f64, 4>(m, "modelview")?;
+            if r.len() != 4 {
+                return Err(PyValueError::new_err(format!(
+                    "modelview must have shape (4, 4), got {:?}",
+                    m.shape()
+                )));
+            }
+            Some(glam::DMat4::from_cols_array_2d(&[r[0], r[1], r[2], r[3]]).transpose())
+        }
+        None => None,
+    };
+    let color_material = color_material
+        .map(|mode| ColorMaterial::parse(mode, color_material_face))
+        .transpose()
+        .map_err(to_pyerr)?;
+    let scene = scene_from(
+        &lights,
+        &material,
+        &back_material,
+        &global_ambient,
+        &viewer,
+        two_side,
+        separate_specular,
+        specular,
+    )?;
+    let call = Call {
+        scene,
+        options: ShadeOptions {
+            modelview,
+            normalize,
+            rescale_normal,
+            color_material,
+        },
+    };
+    let dtype = positions.dtype();
+    if dtype.is_equiv_to(&numpy::dtype::<f32>(py)) {
+        shade_typed::<f32>(py, &call, positions, normals, colors, out)
+    } else if dtype.is_equiv_to(&numpy::dtype::<f64>(py)) {
+        shade_typed::<f64>(py, &call, positions, normals, colors, out)
+    } else {
+        Err(PyTypeError::new_err(format!(
+            "positions must be float32 or float64, got {dtype}"
+        )))
+    }
+}
+
+/// The native part of glshade; use the `glshade` package, which coerces arguments.
+#[pymodule(gil_used = false)]
+mod _glshade {
+    #[pymodule_export]
+    use super::{check_lights, check_material, check_scene, output_names, shade};
+
+    use pyo3::prelude::*;
+
+    #[pymodule_init]
+    fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
+        m.add("LIGHT_LAYOUT", crate::light::LIGHT_LAYOUT.to_vec())?;
+        m.add("MATERIAL_LAYOUT", crate::material::MATERIAL_LAYOUT.to_vec())?;
+        m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+        Ok(())
+    }
+}

@@ -1,0 +1,303 @@
+//! The two arithmetic types of the kernels, `f32` (glam `Vec3`) and `f64` (glam `DVec3`), behind
+//! one trait, so every formula is written once and compiled for both.
+//!
+//! Also the scale-safe vector normalisation that the whole equation relies on: glam's
+//! `normalize` computes `sqrt(dot(v, v))`, which under- or overflows for |v| outside roughly
+//! [1e-19, 1e19] in f32; [`normalize_and_length`] prescales such vectors by an exact power of two.
+
+use glam::{DVec3, Vec3};
+use std::fmt::Debug;
+use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
+
+/// A 3-vector of `T`: the operations of glam's `Vec3`/`DVec3` that the kernels use.
+pub trait Vector3<T>:
+    Copy
+    + Send
+    + Sync
+    + Debug
+    + PartialEq
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Neg<Output = Self>
+    + Mul<T, Output = Self>
+    + Div<T, Output = Self>
+{
+    /// (0, 0, 0).
+    const ZERO: Self;
+    /// The vector `(a[0], a[1], a[2])`.
+    fn from_array(a: [T; 3]) -> Self;
+    /// The components as an array.
+    fn to_array(self) -> [T; 3];
+    /// The dot product `x·x' + y·y' + z·z'`.
+    fn dot(self, other: Self) -> T;
+    /// True when no component is NaN or infinite.
+    fn is_finite(self) -> bool;
+}
+
+macro_rules! impl_vector3 {
+    ($vec:ty, $t:ty) => {
+        impl Vector3<$t> for $vec {
+            const ZERO: Self = <$vec>::ZERO;
+            #[inline]
+            fn from_array(a: [$t; 3]) -> Self {
+                <$vec>::from_array(a)
+            }
+            #[inline]
+            fn to_array(self) -> [$t; 3] {
+                <$vec>::to_array(&self)
+            }
+            #[inline]
+            fn dot(self, other: Self) -> $t {
+                <$vec>::dot(self, other)
+            }
+            #[inline]
+            fn is_finite(self) -> bool {
+                <$vec>::is_finite(self)
+            }
+        }
+    };
+}
+impl_vector3!(Vec3, f32);
+impl_vector3!(DVec3, f64);
+
+/// A floating-point type the kernels compute in: `f32` or `f64`.
+pub trait Real:
+    Copy
+    + Send
+    + Sync
+    + Debug
+    + PartialOrd
+    + Add<Output = Self>
+    + AddAssign
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + 'static
+{
+    /// The glam 3-vector of this precision.
+    type Vec3: Vector3<Self>;
+    /// 0.
+    const ZERO: Self;
+    /// 1.
+    const ONE: Self;
+    /// 0.5.
+    const HALF: Self;
+    /// The largest finite value.
+    const MAX: Self;
+    /// The smallest positive normal value.
+    const MIN_POSITIVE: Self;
+    /// Not a number.
+    const NAN: Self;
+    /// An exact power of two that lifts any nonzero subnormal-length vector into the normal range
+    /// without overflowing its squared length.
+    const UPSCALE: Self;
+    /// The reciprocal of [`Real::UPSCALE`], for vectors whose squared length overflows.
+    const DOWNSCALE: Self;
+    /// Rounds an `f64` to this type.
+    fn from_f64(x: f64) -> Self;
+    /// Widens (exactly) to `f64`.
+    fn to_f64(self) -> f64;
+    /// Square root.
+    fn sqrt(self) -> Self;
+    /// `ln(1 + self)`, accurate near 0.
+    fn ln_1p(self) -> Self;
+    /// `e^self`.
+    fn exp(self) -> Self;
+    /// `self^e` (IEEE `pow`: `0^0 = 1`).
+    fn powf(self, e: Self) -> Self;
+    /// The smaller of two numbers (the non-NaN one if one is NaN).
+    fn min(self, other: Self) -> Self;
+    /// The larger of two numbers (the non-NaN one if one is NaN).
+    fn max(self, other: Self) -> Self;
+    /// True unless NaN or infinite.
+    fn is_finite(self) -> bool;
+    /// `ln |v|` for a nonzero finite `v` of length `length` (as returned by
+    /// [`normalize_and_length`]), accurate to a few ulp of `Self` also when |v| ≈ 1.
+    fn ln_length(v: Self::Vec3, length: Self) -> Self;
+}
+
+macro_rules! impl_real_common {
+    () => {
+        #[inline]
+        fn sqrt(self) -> Self {
+            self.sqrt()
+        }
+        #[inline]
+        fn ln_1p(self) -> Self {
+            self.ln_1p()
+        }
+        #[inline]
+        fn exp(self) -> Self {
+            self.exp()
+        }
+        #[inline]
+        fn powf(self, e: Self) -> Self {
+            self.powf(e)
+        }
+        #[inline]
+        fn min(self, other: Self) -> Self {
+            self.min(other)
+        }
+        #[inline]
+        fn max(self, other: Self) -> Self {
+            self.max(other)
+        }
+        #[inline]
+        fn is_finite(self) -> bool {
+            self.is_finite()
+        }
+    };
+}
+
+impl Real for f32 {
+    type Vec3 = Vec3;
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const HALF: Self = 0.5;
+    const MAX: Self = f32::MAX;
+    const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
+    const NAN: Self = f32::NAN;
+    // 2^-149 · 2^100 = 2^-49 (its square is normal); 2^128 · 2^-100 = 2^28 (its square is finite).
+    const UPSCALE: Self = f32::from_bits((127 + 100) << 23);
+    const DOWNSCALE: Self = f32::from_bits((127 - 100) << 23);
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    impl_real_common!();
+    #[inline]
+    fn ln_length(v: Vec3, _length: f32) -> f32 {
+        // Squares of f32 are exact in f64, so |v|² − 1 keeps every bit that matters near |v| = 1.
+        let w = v.as_dvec3();
+        (0.5 * (w.dot(w) - 1.0).ln_1p()) as f32
+    }
+}
+
+impl Real for f64 {
+    type Vec3 = DVec3;
+    const ZERO: Self = 0.0;
+    const ONE: Self = 1.0;
+    const HALF: Self = 0.5;
+    const MAX: Self = f64::MAX;
+    const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
+    const NAN: Self = f64::NAN;
+    // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).
+    const UPSCALE: Self = f64::from_bits((1023 + 600) << 52);
+    const DOWNSCALE: Self = f64::from_bits((1023 - 600) << 52);
+    #[inline]
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    #[inline]
+    fn to_f64(self) -> f64 {
+        self
+    }
+    impl_real_common!();
+    #[inline]
+    fn ln_length(_v: DVec3, length: f64) -> f64 {
+        length.ln()
+    }
+}
+
+/// The unit vector in the direction of `v` and the length of `v`; `(0, 0)` for the zero vector.
+///
+/// Exact for every finite `v`: when |v|² is subnormal or overflows, `v` is first scaled by an
+/// exact power of two ([`Real::UPSCALE`] or [`Real::DOWNSCALE`]), which changes no direction bit.
+/// The length itself may round to infinity for |v| beyond the type's range.
+#[inline]
+pub fn normalize_and_length<T: Real>(v: T::Vec3) -> (T::Vec3, T) {
+    let len2 = v.dot(v);
+    if len2 >= T::MIN_POSITIVE && len2 <= T::MAX {
+        let len = len2.sqrt();
+        return (v / len, len);
+    }
+    normalize_rescaled(v, len2)
+}
+
+/// The rare branch of [`normalize_and_length`], kept out of line so the hot path stays small.
+#[cold]
+#[inline(never)]
+fn normalize_rescaled<T: Real>(v: T::Vec3, len2: T) -> (T::Vec3, T) {
+    if v == T::Vec3::ZERO {
+        return (T::Vec3::ZERO, T::ZERO);
+    }
+    let scale = if len2 < T::MIN_POSITIVE {
+        T::UPSCALE
+    } else {
+        T::DOWNSCALE
+    };
+    let w = v * scale;
+    let len = w.dot(w).sqrt();
+    (w / len, len / scale)
+}
+
+/// The unit vector in the direction of `v`, or zero for the zero vector (see
+/// [`normalize_and_length`]).
+#[inline]
+pub fn normalize_or_zero<T: Real>(v: T::Vec3) -> T::Vec3 {
+    normalize_and_length::<T>(v).0
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit_error(v: Vec3) -> f32 {
+        (normalize_or_zero::<f32>(v).dot(normalize_or_zero::<f32>(v)) - 1.0).abs()
+    }
+
+    #[test]
+    fn scale_constants_are_exact_powers_of_two() {
+        assert_eq!(f32::UPSCALE, 2f32.powi(100));
+        assert_eq!(f32::DOWNSCALE, 2f32.powi(-100));
+        assert_eq!(f64::UPSCALE, 2f64.powi(600));
+        assert_eq!(f64::DOWNSCALE, 2f64.powi(-600));
+    }
+
+    #[test]
+    fn zero_vector_normalises_to_zero() {
+        assert_eq!(normalize_and_length::<f32>(Vec3::ZERO), (Vec3::ZERO, 0.0));
+        assert_eq!(normalize_and_length::<f64>(DVec3::ZERO), (DVec3::ZERO, 0.0));
+    }
+
+    #[test]
+    fn tiny_and_huge_vectors_keep_their_direction() {
+        for scale in [1e-45_f32, 1e-40, 1e-25, 1e-20, 1.0, 1e20, 1e30, 3e38] {
+            let v = Vec3::new(3.0, 4.0, 0.0) * (scale / 5.0);
+            if v == Vec3::ZERO {
+                continue;
+            }
+            assert!(unit_error(v) < 4e-7, "scale {scale}");
+        }
+        let tiny = 1e-40_f32; // subnormal
+        let (u, len) = normalize_and_length::<f32>(Vec3::new(tiny, 0.0, tiny));
+        assert!((u.x - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-7);
+        // The length itself is subnormal: its ulp, 2^-149, is 1e-5 of it.
+        assert!((f64::from(len) - f64::from(tiny) * 2f64.sqrt()).abs() <= 1.5e-45);
+        let (u, len) = normalize_and_length::<f64>(DVec3::new(0.0, 1e-320, 0.0));
+        assert_eq!(u, DVec3::Y);
+        assert!((len - 1e-320).abs() <= 1e-323);
+        let (u, _) = normalize_and_length::<f64>(DVec3::new(1e300, 1e300, 0.0));
+        assert!((u.x - std::f64::consts::FRAC_1_SQRT_2).abs() <= 2.0 * f64::EPSILON);
+    }
+
+    #[test]
+    fn ln_length_is_accurate_near_one() {
+        let v = Vec3::new(0.6, 0.8, 1e-4);
+        let exact = 0.5 * (0.36_f64 + 0.64 + 1e-8).ln();
+        let (_, len) = normalize_and_length::<f32>(v);
+        let got = f64::from(f32::ln_length(v, len));
+        let v64 = v.as_dvec3();
+        let exact_f32_input = 0.5 * v64.dot(v64).ln();
+        assert!(
+            (got - exact_f32_input).abs() < 1e-12,
+            "{got} vs {exact_f32_input}"
+        );
+        assert!((exact - exact_f32_input).abs() < 1e-7);
+    }
+}
