@@ -137,7 +137,7 @@ impl ColorMaterial {
             _ => {
                 return Err(Error::value(format!(
                     "color_material must be one of 'ambient', 'diffuse', 'specular', 'emission', \
-                     'ambient_and_diffuse', got {mode:?}"
+                     'ambient_and_diffuse', got '{mode}'"
                 )))
             }
         };
@@ -147,7 +147,7 @@ impl ColorMaterial {
             "front_and_back" => Face::FrontAndBack,
             _ => {
                 return Err(Error::value(format!(
-                    "color_material_face must be one of 'front', 'back', 'front_and_back', got {face:?}"
+                    "color_material_face must be one of 'front', 'back', 'front_and_back', got '{face}'"
                 )))
             }
         };

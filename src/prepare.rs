@@ -10,10 +10,12 @@ use crate::material::{ColorMaterial, Material};
 use crate::real::{normalize_or_zero, Real, Vector3};
 use crate::scene::{Scene, Specular};
 
-/// Every colour, per-light weight and per-vertex colour is clamped to ±2^100 before it is
-/// multiplied: products of a few such factors stay far inside `f64`, so no finite input can
-/// produce `inf·0` or `inf − inf`, and 2^100 is beyond anything that survives the final clamp.
-pub const SATURATION: f64 = 1.267_650_600_228_229_4e30;
+/// Every colour, per-light weight and per-vertex colour is clamped to ±2^240 before it is
+/// multiplied. Four such factors times 2^32 lights stay below 2^1023, so no finite input can
+/// produce `inf·0` or `inf − inf` in the `f64` sums. The bound is reachable only by `f64` input
+/// (f32 values stop at 2^128), and only by sums far beyond anything that survives the clamp:
+/// without `normalize`, |n| = 1.3 and s = 128 legitimately give 10^35.
+pub const SATURATION: f64 = f64::from_bits((1023 + 240) << 52);
 
 /// `x` clamped to [−[`SATURATION`], [`SATURATION`]].
 #[inline]

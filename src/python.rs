@@ -176,10 +176,16 @@ fn shade_typed<'py, T: Element + Real>(
             data: rows::<T, 3>(c, "colors")?.as_flattened(),
             width: 3,
         }),
-        Some(c) => Some(VertexColors {
+        Some(c) if c.shape()[1] == 4 => Some(VertexColors {
             data: rows::<T, 4>(c, "colors")?.as_flattened(),
             width: 4,
         }),
+        Some(c) => {
+            return Err(PyValueError::new_err(format!(
+                "colors must have shape ({n}, 3) or ({n}, 4), got {:?}",
+                c.shape()
+            )))
+        }
         None => None,
     };
     let planes = call.scene.output_count();

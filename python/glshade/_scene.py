@@ -241,27 +241,23 @@ class Light(Lights):
         spot_cutoff: float = 180.0,
         ambient: ArrayLike = (0.0, 0.0, 0.0, 1.0),
     ) -> None:
-        args = {
-            "position": position,
-            "diffuse": diffuse,
-            "specular": specular,
-            "spot_direction": spot_direction,
-            "ambient": ambient,
-        }
-        for name, v in args.items():
-            if np.ndim(v) != 1:
-                raise ValueError(f"{name} of a Light must be one vector, got shape {np.shape(v)}")
-        scalars = {
-            "constant_attenuation": constant_attenuation,
-            "linear_attenuation": linear_attenuation,
-            "quadratic_attenuation": quadratic_attenuation,
-            "spot_exponent": spot_exponent,
-            "spot_cutoff": spot_cutoff,
-        }
-        for name, v in scalars.items():
-            if np.ndim(v) != 0:
-                raise ValueError(f"{name} of a Light must be a number, got shape {np.shape(v)}")
-        super().__init__(**args, **scalars)  # type: ignore[arg-type]
+        super().__init__(
+            position,
+            diffuse,
+            specular,
+            constant_attenuation,
+            linear_attenuation,
+            quadratic_attenuation,
+            spot_direction,
+            spot_exponent,
+            spot_cutoff,
+            ambient,
+        )
+        if len(self) != 1:
+            raise ValueError(
+                f"a Light takes one value per parameter, got {len(self)} rows: "
+                "use glshade.Lights for many lights"
+            )
 
     def __repr__(self) -> str:
         fields = ", ".join(
