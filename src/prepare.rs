@@ -68,7 +68,7 @@ pub fn cos_pow<T: Real>(cos: T, a: T::Vec3, b: T::Vec3, s: T, ln_scale: T) -> T 
     if s == T::ZERO {
         return T::ONE;
     }
-    if !(cos > T::ZERO) {
+    if cos <= T::ZERO {
         return T::ZERO;
     }
     let d = a - b;
@@ -300,18 +300,17 @@ impl<T: Real> Prepared<T> {
         scene.validate()?;
         let [x, y, z, w] = scene.viewer;
         let infinite_view = (w == 0.0).then(|| normalize_or_zero::<f64>(DVec3::new(x, y, z)));
-        let viewer = match infinite_view {
-            Some(v) => Viewer::Infinite(cast::<T>(v)),
-            None => {
-                let point = cast::<T>(DVec3::new(x, y, z) / w);
-                if !point.is_finite() {
-                    return Err(Error::value(format!(
-                        "viewer must lie within the range of the input dtype, got {:?}",
-                        scene.viewer
-                    )));
-                }
-                Viewer::Local(point)
+        let viewer = if let Some(v) = infinite_view {
+            Viewer::Infinite(cast::<T>(v))
+        } else {
+            let point = cast::<T>(DVec3::new(x, y, z) / w);
+            if !point.is_finite() {
+                return Err(Error::value(format!(
+                    "viewer must lie within the range of the input dtype, got {:?}",
+                    scene.viewer
+                )));
             }
+            Viewer::Local(point)
         };
         let blinn = scene.specular == Specular::Blinn;
         let lights = scene

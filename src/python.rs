@@ -1,6 +1,11 @@
 //! The Python binding, `glshade._glshade`: borrow and check the arrays, release the GIL, call the
 //! core, hand the result back. No arithmetic happens here.
 
+// pyo3 extracts every argument by value; the borrows are what these functions own.
+#![allow(clippy::needless_pass_by_value)]
+// `shade` mirrors the Python signature, GL's enable flags included.
+#![allow(clippy::fn_params_excessive_bools)]
+
 use numpy::{
     Element, PyArray1, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArray1,
     PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
@@ -196,36 +201,32 @@ fn shade_typed<'py, T: Element + Real>(
     };
     let run =
         |dst: &mut [T]| crate::shade::shade(&call.scene, p, nr, vertex_colors, &call.options, dst);
-    match out {
-        Some(out) => {
-            let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
-                PyTypeError::new_err(format!(
-                    "out must be an array of {}, got {}",
-                    numpy::dtype::<T>(py),
-                    out.dtype()
-                ))
-            })?;
-            if array.shape() != shape.as_slice() {
-                return Err(PyValueError::new_err(format!(
-                    "out must have shape {shape:?}, got {:?}",
-                    array.shape()
-                )));
-            }
-            let mut rw = array
-                .try_readwrite()
-                .map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
-            let dst = rw
-                .as_slice_mut()
-                .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
-            py.detach(|| run(dst)).map_err(to_pyerr)?;
-            Ok(array.clone().into_any())
-        }
-        None => {
-            let mut dst = vec![T::ZERO; planes * n * 4];
-            py.detach(|| run(&mut dst)).map_err(to_pyerr)?;
-            Ok(PyArray1::from_vec(py, dst).reshape(shape)?.into_any())
-        }
+    let Some(out) = out else {
+        let mut dst = vec![T::ZERO; planes * n * 4];
+        py.detach(|| run(&mut dst)).map_err(to_pyerr)?;
+        return Ok(PyArray1::from_vec(py, dst).reshape(shape)?.into_any());
+    };
+    let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "out must be an array of {}, got {}",
+            numpy::dtype::<T>(py),
+            out.dtype()
+        ))
+    })?;
+    if array.shape() != shape.as_slice() {
+        return Err(PyValueError::new_err(format!(
+            "out must have shape {shape:?}, got {:?}",
+            array.shape()
+        )));
     }
+    let mut rw = array
+        .try_readwrite()
+        .map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
+    let dst = rw
+        .as_slice_mut()
+        .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
+    py.detach(|| run(dst)).map_err(to_pyerr)?;
+    Ok(array.clone().into_any())
 }
 
 /// Lights the vertices; see `glshade.shade` for the arguments, which arrive here already

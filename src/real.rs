@@ -95,20 +95,28 @@ pub trait Real:
     /// The reciprocal of [`Real::UPSCALE`], for vectors whose squared length overflows.
     const DOWNSCALE: Self;
     /// Rounds an `f64` to this type.
+    #[must_use]
     fn from_f64(x: f64) -> Self;
     /// Widens (exactly) to `f64`.
+    #[must_use]
     fn to_f64(self) -> f64;
     /// Square root.
+    #[must_use]
     fn sqrt(self) -> Self;
     /// `ln(1 + self)`, accurate near 0.
+    #[must_use]
     fn ln_1p(self) -> Self;
     /// `e^self`.
+    #[must_use]
     fn exp(self) -> Self;
     /// `self^e` (IEEE `pow`: `0^0 = 1`).
+    #[must_use]
     fn powf(self, e: Self) -> Self;
     /// The smaller of two numbers (the non-NaN one if one is NaN).
+    #[must_use]
     fn min(self, other: Self) -> Self;
     /// The larger of two numbers (the non-NaN one if one is NaN).
+    #[must_use]
     fn max(self, other: Self) -> Self;
     /// True unless NaN or infinite.
     fn is_finite(self) -> bool;

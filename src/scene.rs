@@ -137,14 +137,16 @@ mod tests {
 
     #[test]
     fn validation_reports_the_light_index() {
-        let mut s = Scene::default();
-        s.lights = vec![
-            Light::default(),
-            Light {
-                spot_cutoff: 91.0,
-                ..Light::default()
-            },
-        ];
+        let mut s = Scene {
+            lights: vec![
+                Light::default(),
+                Light {
+                    spot_cutoff: 91.0,
+                    ..Light::default()
+                },
+            ],
+            ..Scene::default()
+        };
         assert!(s.validate().unwrap_err().message.contains("light 1"));
         s.lights.clear();
         s.viewer = [0.0; 4];

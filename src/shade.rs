@@ -539,7 +539,7 @@ mod tests {
                     &ShadeOptions::default(),
                     &mut out,
                 )
-                .unwrap()
+                .unwrap();
             });
             out.iter().map(|x| x.to_bits()).collect::<Vec<_>>()
         };

@@ -102,13 +102,18 @@ def eye_space(P: np.ndarray, N: np.ndarray, s: RefScene) -> tuple[np.ndarray, np
 
 def material_at(m: dict[str, Any], s: RefScene, back: bool, n_vertices: int) -> dict[str, Any]:
     """Section 2.14.3: with COLOR_MATERIAL the vertex colour replaces the tracked parameters."""
-    out = {k: np.broadcast_to(rgba(m[k]), (n_vertices, 4)) for k in ("ambient", "diffuse", "specular", "emission")}
+    out = {
+        k: np.broadcast_to(rgba(m[k]), (n_vertices, 4))
+        for k in ("ambient", "diffuse", "specular", "emission")
+    }
     out["shininess"] = float(m["shininess"])
     face_tracks = {"front_and_back": True, "front": not back, "back": back}[s.color_material_face]
     if s.colors is not None and face_tracks:
         c = np.asarray(s.colors, dtype=np.float64)
         c = np.c_[c, np.ones(len(c))] if c.shape[1] == 3 else c
-        tracked = {"ambient_and_diffuse": ("ambient", "diffuse")}.get(s.color_material, (s.color_material,))
+        tracked = {"ambient_and_diffuse": ("ambient", "diffuse")}.get(
+            s.color_material, (s.color_material,)
+        )
         for k in tracked:
             out[k] = c
     return out
@@ -132,7 +137,9 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
     magnitudes, sensitivities = [], []
     for n, mat, back in sides:
         m = material_at(mat, s, back, n_vertices)
-        a_cm, d_cm, s_cm, e_cm = (m[k][:, :3] for k in ("ambient", "diffuse", "specular", "emission"))
+        a_cm, d_cm, s_cm, e_cm = (
+            m[k][:, :3] for k in ("ambient", "diffuse", "specular", "emission")
+        )
         srm = m["shininess"]
         c_pri = e_cm + a_cm * acs
         c_sec = np.zeros((n_vertices, 3))
@@ -148,7 +155,11 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
                 D = Ppl[:3] / Ppl[3] - V
                 d = np.linalg.norm(D, axis=1)
                 VP = unit(D)
-                k0, k1, k2 = L["constant_attenuation"], L["linear_attenuation"], L["quadratic_attenuation"]
+                k0, k1, k2 = (
+                    L["constant_attenuation"],
+                    L["linear_attenuation"],
+                    L["quadratic_attenuation"],
+                )
                 att = 1.0 / (k0 + k1 * d + k2 * d**2)
                 margin = np.minimum(margin, d)
             if L["spot_cutoff"] == 180:

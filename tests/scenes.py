@@ -7,9 +7,9 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from gl_reference import RefScene
 
 import glshade as gs
+from gl_reference import RefScene
 
 COLOR_MATERIAL_MODES = ("ambient", "diffuse", "specular", "emission", "ambient_and_diffuse")
 FACES = ("front", "back", "front_and_back")
@@ -44,8 +44,14 @@ def random_light(rng: np.random.Generator) -> dict[str, Any]:
         light["position"] = (*(rng.uniform(-4, 4, 3) * w), w)
     if rng.random() < 0.6:
         k = rng.uniform(0, 1, 3) * (rng.random(3) < 0.6)
-        k[0] = rng.choice([0.0, rng.uniform(0.2, 2.0)]) if k[1] + k[2] > 0 else rng.uniform(0.2, 2.0)
-        light["constant_attenuation"], light["linear_attenuation"], light["quadratic_attenuation"] = k
+        k[0] = (
+            rng.choice([0.0, rng.uniform(0.2, 2.0)]) if k[1] + k[2] > 0 else rng.uniform(0.2, 2.0)
+        )
+        (
+            light["constant_attenuation"],
+            light["linear_attenuation"],
+            light["quadratic_attenuation"],
+        ) = k
     if rng.random() < 0.5:
         light["spot_cutoff"] = float(rng.choice([rng.uniform(0, 90), 90.0, 45.0, 0.0]))
         light["spot_direction"] = tuple(rng.normal(size=3) * rng.uniform(0.1, 3))
@@ -73,7 +79,7 @@ def random_modelview(rng: np.random.Generator) -> np.ndarray:
 
 
 def random_case(seed: int, n: int, dtype: Any) -> Case:
-    """A scene drawn from `seed`, with `n` vertices of `dtype`; every feature is on in some seeds."""
+    """A scene drawn from `seed` with `n` vertices of `dtype`; each feature is on in some seeds."""
     rng = np.random.default_rng(seed)
     lights = [random_light(rng) for _ in range(int(rng.integers(1, 9)))]
     material = random_material(rng)
@@ -148,7 +154,9 @@ def shade_kwargs(ref: RefScene) -> dict[str, Any]:
 
 
 def describe(ref: RefScene) -> str:
-    kinds = ["dir" if light.get("position", (0, 0, 1, 0))[3] == 0 else "pos" for light in ref.lights]
+    kinds = [
+        "dir" if light.get("position", (0, 0, 1, 0))[3] == 0 else "pos" for light in ref.lights
+    ]
     spots = sum(light.get("spot_cutoff", 180) != 180 for light in ref.lights)
     return (
         f"{len(ref.lights)} lights {kinds} ({spots} spot), viewer={ref.viewer}, "

@@ -14,9 +14,9 @@ from typing import Any
 
 import numpy as np
 import pytest
-from gl_reference import RefScene, gl_lighting
 
 import glshade as gs
+from gl_reference import RefScene, gl_lighting
 
 RNG = np.random.default_rng(2024)
 
@@ -26,7 +26,10 @@ def vertices(n: int, dtype: Any = np.float64) -> tuple[np.ndarray, np.ndarray]:
 
 
 SCENE = gs.Scene(
-    lights=[gs.Light(position=(1, 2, 3, 1), linear_attenuation=0.3), gs.Light(position=(0, 1, 0, 0))],
+    lights=[
+        gs.Light(position=(1, 2, 3, 1), linear_attenuation=0.3),
+        gs.Light(position=(0, 1, 0, 0)),
+    ],
     material=gs.Material(specular=(1, 1, 1), shininess=20),
 )
 
@@ -58,7 +61,9 @@ def test_python_sequences_compute_in_float64() -> None:
 def test_fortran_and_strided_views_give_the_contiguous_result(dtype: Any) -> None:
     p, n = vertices(101, dtype)
     expected = gs.shade(p, n, SCENE)
-    np.testing.assert_array_equal(gs.shade(np.asfortranarray(p), np.asfortranarray(n), SCENE), expected)
+    np.testing.assert_array_equal(
+        gs.shade(np.asfortranarray(p), np.asfortranarray(n), SCENE), expected
+    )
     wide_p = np.zeros((101, 7), dtype)
     wide_p[:, 2:5] = p
     strided_n = np.repeat(n, 2, axis=0)[::2]
@@ -71,7 +76,11 @@ def test_fortran_and_strided_views_give_the_contiguous_result(dtype: Any) -> Non
 def test_empty_input_gives_an_empty_result() -> None:
     assert gs.shade(np.zeros((0, 3)), np.zeros((0, 3)), SCENE).shape == (0, 4)
     two = gs.Scene(lights=[gs.Light()], two_side=True)
-    assert gs.shade(np.zeros((0, 3), np.float32), np.zeros((0, 3), np.float32), two).shape == (2, 0, 4)
+    assert gs.shade(np.zeros((0, 3), np.float32), np.zeros((0, 3), np.float32), two).shape == (
+        2,
+        0,
+        4,
+    )
 
 
 def test_output_shape_follows_the_light_model() -> None:
@@ -118,44 +127,116 @@ P, N = vertices(4)
         (lambda: gs.shade(P.astype(np.longdouble), N, SCENE), TypeError, ["positions", "float"]),
         (lambda: gs.shade([["a", "b", "c"]], [[0, 0, 1]], SCENE), TypeError, ["positions"]),
         (lambda: gs.shade(P, N, "scene"), TypeError, ["scene", "Scene"]),
-        (lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 2))), ValueError, ["colors", "(4, 3) or (4, 4)"]),
+        (
+            lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 2))),
+            ValueError,
+            ["colors", "(4, 3) or (4, 4)"],
+        ),
         (lambda: gs.shade(P, N, SCENE, colors=np.ones((5, 3))), ValueError, ["colors", "(4, 3)"]),
-        (lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3), int) > 0), TypeError, ["colors", "bool"]),
-        (lambda: gs.shade(P, N, SCENE, color_material="diffuse"), ValueError, ["color_material", "colors"]),
-        (lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3)), color_material="shiny"), ValueError, ["color_material", "'shiny'"]),
+        (
+            lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3), int) > 0),
+            TypeError,
+            ["colors", "bool"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, color_material="diffuse"),
+            ValueError,
+            ["color_material", "colors"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3)), color_material="shiny"),
+            ValueError,
+            ["color_material", "'shiny'"],
+        ),
         (
             lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3)), color_material_face="both"),
             ValueError,
             ["color_material_face", "'both'"],
         ),
-        (lambda: gs.shade(P, N, SCENE, modelview=np.eye(3)), ValueError, ["modelview", "(4, 4)", "(3, 3)"]),
-        (lambda: gs.shade(P, N, SCENE, modelview=np.diag([1, 0, 1, 1])), ValueError, ["modelview", "invertible"]),
-        (lambda: gs.shade(P, N, SCENE, modelview=np.ones((4, 4))), ValueError, ["modelview", "affine"]),
-        (lambda: gs.shade(P, N, SCENE, modelview=np.full((4, 4), np.nan)), ValueError, ["modelview", "finite"]),
-        (lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 3))), ValueError, ["out", "[4, 4]", "[4, 3]"]),
-        (lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 4), np.float32)), TypeError, ["out", "float64", "float32"]),
-        (lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 8))[:, ::2]), ValueError, ["out", "contiguous"]),
+        (
+            lambda: gs.shade(P, N, SCENE, modelview=np.eye(3)),
+            ValueError,
+            ["modelview", "(4, 4)", "(3, 3)"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, modelview=np.diag([1, 0, 1, 1])),
+            ValueError,
+            ["modelview", "invertible"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, modelview=np.ones((4, 4))),
+            ValueError,
+            ["modelview", "affine"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, modelview=np.full((4, 4), np.nan)),
+            ValueError,
+            ["modelview", "finite"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 3))),
+            ValueError,
+            ["out", "[4, 4]", "[4, 3]"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 4), np.float32)),
+            TypeError,
+            ["out", "float64", "float32"],
+        ),
+        (
+            lambda: gs.shade(P, N, SCENE, out=np.zeros((4, 8))[:, ::2]),
+            ValueError,
+            ["out", "contiguous"],
+        ),
         (lambda: gs.shade(P, N, SCENE, out=[[0.0] * 4] * 4), TypeError, ["out", "numpy array"]),
         (lambda: gs.Light(spot_cutoff=95), ValueError, ["spot_cutoff", "[0, 90]", "180", "95"]),
         (lambda: gs.Light(spot_cutoff=-1), ValueError, ["spot_cutoff", "-1"]),
         (lambda: gs.Light(spot_cutoff=179.9), ValueError, ["spot_cutoff", "179.9"]),
         (lambda: gs.Light(spot_exponent=-2), ValueError, ["spot_exponent", ">= 0", "-2"]),
-        (lambda: gs.Light(constant_attenuation=-1), ValueError, ["constant_attenuation", ">= 0", "-1"]),
+        (
+            lambda: gs.Light(constant_attenuation=-1),
+            ValueError,
+            ["constant_attenuation", ">= 0", "-1"],
+        ),
         (lambda: gs.Light(linear_attenuation=-0.1), ValueError, ["linear_attenuation", "-0.1"]),
-        (lambda: gs.Light(quadratic_attenuation=float("nan")), ValueError, ["quadratic_attenuation", "NaN"]),
+        (
+            lambda: gs.Light(quadratic_attenuation=float("nan")),
+            ValueError,
+            ["quadratic_attenuation", "NaN"],
+        ),
         (lambda: gs.Light(position=(1, 2, 3)), ValueError, ["position", "(4,)", "(3,)"]),
         (lambda: gs.Light(position=(0, 0, 0, 0)), ValueError, ["position", "direction"]),
         (lambda: gs.Light(diffuse=(1, 1)), ValueError, ["diffuse", "(3,)", "(2,)"]),
         (lambda: gs.Light(specular=(np.inf, 0, 0)), ValueError, ["specular", "finite", "inf"]),
-        (lambda: gs.Light(position=(0, 0, 1, 1), constant_attenuation=0), ValueError, ["attenuation", "positional"]),
-        (lambda: gs.Light(spot_cutoff=10, spot_direction=(0, 0, 0)), ValueError, ["spot_direction", "nonzero"]),
+        (
+            lambda: gs.Light(position=(0, 0, 1, 1), constant_attenuation=0),
+            ValueError,
+            ["attenuation", "positional"],
+        ),
+        (
+            lambda: gs.Light(spot_cutoff=10, spot_direction=(0, 0, 0)),
+            ValueError,
+            ["spot_direction", "nonzero"],
+        ),
         (lambda: gs.Light(position="above"), TypeError, ["position"]),
-        (lambda: gs.Lights(position=np.ones((3, 4)), diffuse=np.ones((2, 3))), ValueError, ["same number of rows", "position: 3", "diffuse: 2"]),
+        (
+            lambda: gs.Lights(position=np.ones((3, 4)), diffuse=np.ones((2, 3))),
+            ValueError,
+            ["same number of rows", "position: 3", "diffuse: 2"],
+        ),
         (lambda: gs.Lights(spot_cutoff=[10, 200]), ValueError, ["spot_cutoff of light 1", "200"]),
         (lambda: gs.Material(shininess=-1), ValueError, ["shininess", ">= 0", "-1"]),
         (lambda: gs.Material(emission=(0, 0, np.nan)), ValueError, ["emission", "finite"]),
-        (lambda: gs.Material(ambient=np.ones((2, 3))), ValueError, ["ambient", "(3,) or (4,)", "(2, 4)"]),
-        (lambda: gs.Scene(specular="cook-torrance"), ValueError, ["specular", "'blinn' or 'phong'", "cook-torrance"]),
+        (
+            lambda: gs.Material(ambient=np.ones((2, 3))),
+            ValueError,
+            ["ambient", "(3,) or (4,)", "(2, 4)"],
+        ),
+        (
+            lambda: gs.Scene(specular="cook-torrance"),
+            ValueError,
+            ["specular", "'blinn' or 'phong'", "cook-torrance"],
+        ),
         (lambda: gs.Scene(viewer=(0, 0, 1)), ValueError, ["viewer", "(4,)", "(3,)"]),
         (lambda: gs.Scene(viewer=(0, 0, 0, 0)), ValueError, ["viewer"]),
         (lambda: gs.Scene(global_ambient=(0, np.nan, 0)), ValueError, ["global_ambient", "finite"]),
@@ -175,7 +256,13 @@ def test_bad_input_raises_a_clear_error(call: Any, exception: type, words: list[
 def test_native_module_rejects_bad_arrays_without_crashing() -> None:
     from glshade import _glshade
 
-    args = [SCENE.lights.table, SCENE.material.row, SCENE.material.row, SCENE.global_ambient, SCENE.viewer]
+    args = [
+        SCENE.lights.table,
+        SCENE.material.row,
+        SCENE.material.row,
+        SCENE.global_ambient,
+        SCENE.viewer,
+    ]
     tail = [False, False, "blinn", None, False, False, None, None, "front_and_back", None]
     with pytest.raises(TypeError, match="positions must be float32 or float64"):
         _glshade.shade(P.astype(np.int32), N, *args, *tail)
@@ -207,19 +294,32 @@ def test_ten_thousand_lights_from_arrays() -> None:
         spot_direction=rng.normal(size=(count, 3)),
     )
     assert len(lights) == count
-    material = {"ambient": (0.2, 0.2, 0.2), "diffuse": (0.8, 0.7, 0.6), "specular": (1, 1, 1), "emission": (0, 0, 0), "shininess": 16.0}
+    material = {
+        "ambient": (0.2, 0.2, 0.2),
+        "diffuse": (0.8, 0.7, 0.6),
+        "specular": (1, 1, 1),
+        "emission": (0, 0, 0),
+        "shininess": 16.0,
+    }
     scene = gs.Scene(lights=lights, material=gs.Material(**material), viewer=(0, 0, 0, 1))
     p, n = vertices(8)
     n /= np.linalg.norm(n, axis=1, keepdims=True)
     got = gs.shade(p, n, scene)
     ref_lights = [
-        {name: lights.table[i, cols] if len(cols) > 1 else lights.table[i, cols][0] for name, cols in _columns()}
+        {
+            name: lights.table[i, cols] if len(cols) > 1 else lights.table[i, cols][0]
+            for name, cols in _columns()
+        }
         for i in range(count)
     ]
     ref = gl_lighting(p, n, RefScene(lights=ref_lights, material=material, viewer=(0, 0, 0, 1)))
     np.testing.assert_allclose(got, ref.outputs[0], atol=1e-12 * max(1, ref.magnitude.max()))
     got32 = gs.shade(p.astype(np.float32), n.astype(np.float32), scene)
-    ref32 = gl_lighting(p.astype(np.float32), n.astype(np.float32), RefScene(lights=ref_lights, material=material, viewer=(0, 0, 0, 1)))
+    ref32 = gl_lighting(
+        p.astype(np.float32),
+        n.astype(np.float32),
+        RefScene(lights=ref_lights, material=material, viewer=(0, 0, 0, 1)),
+    )
     np.testing.assert_allclose(got32, ref32.outputs[0], atol=1e-5)
 
 
@@ -270,8 +370,12 @@ def _count_while(work: Any) -> float:
 
 def test_shade_releases_the_gil() -> None:
     p, n = vertices(1_000_000, np.float32)
-    lights = gs.Lights(position=np.c_[RNG.normal(size=(16, 3)), np.ones(16)], linear_attenuation=0.1)
-    scene = gs.Scene(lights=lights, material=gs.Material(specular=(1, 1, 1), shininess=30), viewer=(0, 0, 0, 1))
+    lights = gs.Lights(
+        position=np.c_[RNG.normal(size=(16, 3)), np.ones(16)], linear_attenuation=0.1
+    )
+    scene = gs.Scene(
+        lights=lights, material=gs.Material(specular=(1, 1, 1), shininess=30), viewer=(0, 0, 0, 1)
+    )
     free = _count_while(lambda: time.sleep(0.3))
     during = _count_while(lambda: gs.shade(p, n, scene))
     # Measured on 2 cores: ~0.3-0.6 of the free rate with the GIL released, ~0.03 without it.
@@ -284,14 +388,18 @@ import hashlib, numpy as np, glshade as gs
 rng = np.random.default_rng(3)
 p = rng.uniform(-1, 1, (50_000, 3)).astype(np.float32)
 n = rng.normal(size=(50_000, 3)).astype(np.float32)
-lights = gs.Lights(position=np.c_[rng.normal(size=(6, 3)), np.ones(6)], spot_cutoff=60, linear_attenuation=0.2)
-scene = gs.Scene(lights=lights, material=gs.Material(specular=(1, 1, 1), shininess=50), two_side=True)
+pos = np.c_[rng.normal(size=(6, 3)), np.ones(6)]
+lights = gs.Lights(position=pos, spot_cutoff=60, linear_attenuation=0.2)
+material = gs.Material(specular=(1, 1, 1), shininess=50)
+scene = gs.Scene(lights=lights, material=material, two_side=True)
 print(hashlib.sha256(gs.shade(p, n, scene, normalize=True).tobytes()).hexdigest())
 """
     digests = set()
     for threads in ("1", "2", "5"):
         env = {**os.environ, "RAYON_NUM_THREADS": threads}
-        run = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True, check=True)
+        run = subprocess.run(
+            [sys.executable, "-c", script], env=env, capture_output=True, text=True, check=True
+        )
         digests.add(run.stdout.strip())
     assert len(digests) == 1
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from gl_reference import gl_lighting
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from scenes import random_case, stacked
 
 import glshade as gs
+from gl_reference import gl_lighting
+from scenes import random_case, stacked
 
 TOL = {np.float64: 1e-12, np.float32: 1e-5}
 MARGIN = {np.float64: 1e-9, np.float32: 2e-5}
@@ -104,7 +104,10 @@ def test_random_scenes_cover_every_feature() -> None:
         "spot directional=False cutoff90=True",
         "attenuated",
         "k0=0",
-        *(f"color_material={m}" for m in ("ambient", "diffuse", "specular", "emission", "ambient_and_diffuse")),
+        *(
+            f"color_material={m}"
+            for m in ("ambient", "diffuse", "specular", "emission", "ambient_and_diffuse")
+        ),
         *(f"color_material_face={f}" for f in ("front", "back", "front_and_back")),
     }
     assert expected <= seen, expected - seen

@@ -5,6 +5,17 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
+__all__ = [
+    "LIGHT_LAYOUT",
+    "MATERIAL_LAYOUT",
+    "__version__",
+    "check_lights",
+    "check_material",
+    "check_scene",
+    "output_names",
+    "shade",
+]
+
 __version__: str
 LIGHT_LAYOUT: list[tuple[str, int]]
 MATERIAL_LAYOUT: list[tuple[str, int]]

@@ -8,7 +8,7 @@ that shades, so a bad parameter is reported when the object is built.
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any, Literal
+from typing import Any, Literal, TypeVar
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -18,6 +18,7 @@ from . import _glshade
 __all__ = ["Light", "Lights", "Material", "Scene"]
 
 Float64Array = NDArray[np.float64]
+_L = TypeVar("_L", bound="Lights")
 
 _LIGHT_COLUMNS: dict[str, slice] = {}
 _start = 0
@@ -152,7 +153,7 @@ class Lights:
         self._table = _frozen(table)
 
     @classmethod
-    def _from_table(cls, table: Float64Array) -> Lights:
+    def _from_table(cls: type[_L], table: Float64Array) -> _L:
         obj = cls.__new__(cls)
         obj._table = _frozen(np.ascontiguousarray(table, dtype=np.float64))
         return obj

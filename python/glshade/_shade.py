@@ -132,7 +132,10 @@ def shade(
         m = np.ascontiguousarray(m, dtype=np.float64)
     if out is not None and not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out)!r}")
-    for name, value in (("color_material", color_material), ("color_material_face", color_material_face)):
+    for name, value in (
+        ("color_material", color_material),
+        ("color_material_face", color_material_face),
+    ):
         if value is not None and not isinstance(value, str):
             raise TypeError(f"{name} must be a string, got {value!r}")
     result: FloatArray = _glshade.shade(

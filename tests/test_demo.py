@@ -1,0 +1,54 @@
+"""`python -m glshade demo` runs, prints what it computed, and writes a valid PNG."""
+
+from __future__ import annotations
+
+import struct
+import subprocess
+import sys
+import zlib
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from glshade._png import write_png
+
+
+def test_demo_runs_and_writes_the_image(tmp_path: Path) -> None:
+    output = tmp_path / "demo.png"
+    run = subprocess.run(
+        [
+            sys.executable,
+            "-m",
+            "glshade",
+            "demo",
+            "--size",
+            "96",
+            "--repeat",
+            "2",
+            "--output",
+            str(output),
+        ],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "Mvertices/s" in run.stdout and "float32" in run.stdout and "float64" in run.stdout
+    assert f"wrote {output}" in run.stdout
+    max_diff = float(run.stdout.split("max |float32 - float64|")[1].split(":")[1].split()[0])
+    assert max_diff < 1e-5
+    assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_png_round_trip(tmp_path: Path) -> None:
+    image = np.random.default_rng(0).uniform(-0.5, 1.5, (5, 7, 4))
+    data = write_png(tmp_path / "x.png", image).read_bytes()
+    width, height = struct.unpack(">II", data[16:24])
+    assert (width, height) == (7, 5)
+    idat = data[data.index(b"IDAT") + 4 : data.index(b"IEND") - 8]
+    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(5, 1 + 7 * 4)
+    assert (rows[:, 0] == 0).all()
+    expected = np.round(np.clip(image, 0, 1) * 255).astype(np.uint8)
+    np.testing.assert_array_equal(rows[:, 1:].reshape(5, 7, 4), expected)
+    with pytest.raises(ValueError, match="height, width, 4"):
+        write_png(tmp_path / "y.png", image[..., :3])
