@@ -10,6 +10,7 @@
 pub mod error;
 pub mod light;
 pub mod material;
+pub mod normals;
 pub mod prepare;
 pub mod real;
 pub mod scene;
@@ -18,6 +19,7 @@ pub mod shade;
 pub use error::{Error, ErrorKind};
 pub use light::Light;
 pub use material::{ColorMaterial, ColorMaterialMode, Face, Material};
+pub use normals::{face_normals, vertex_normals, Weighting};
 pub use prepare::ShadeOptions;
 pub use scene::{Scene, Specular};
 pub use shade::{shade, VertexColors};

@@ -16,6 +16,7 @@ use pyo3::prelude::*;
 use crate::error::{Error, ErrorKind};
 use crate::light::{Light, LIGHT_ROW_LEN};
 use crate::material::{ColorMaterial, Material, MATERIAL_ROW_LEN};
+use crate::normals::Weighting;
 use crate::prepare::ShadeOptions;
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
@@ -36,7 +37,7 @@ fn rows<'a, T: Element, const K: usize>(
     let shape = a.shape();
     if shape[1] != K {
         return Err(PyValueError::new_err(format!(
-            "{name} must have shape (n, {K}), got {shape:?}"
+            "{name} must have {K} columns, got shape {shape:?}"
         )));
     }
     if !a.is_c_contiguous() {
@@ -68,6 +69,25 @@ fn vec4(v: &PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<[f64; 4]> {
     v.as_slice()?
         .try_into()
         .map_err(|_| PyValueError::new_err(format!("{name} must have 4 values, got {}", v.len())))
+}
+
+/// The computation type an input array selects.
+enum Float {
+    F32,
+    F64,
+}
+
+fn float_of(py: Python<'_>, array: &Bound<'_, PyUntypedArray>, name: &str) -> PyResult<Float> {
+    let dtype = array.dtype();
+    if dtype.is_equiv_to(&numpy::dtype::<f32>(py)) {
+        Ok(Float::F32)
+    } else if dtype.is_equiv_to(&numpy::dtype::<f64>(py)) {
+        Ok(Float::F64)
+    } else {
+        Err(PyTypeError::new_err(format!(
+            "{name} must be float32 or float64, got {dtype}"
+        )))
+    }
 }
 
 /// Checks a light table (one row per light, laid out as `LIGHT_LAYOUT`); raises `ValueError`.
@@ -293,15 +313,65 @@ fn shade<'py>(
             color_material,
         },
     };
-    let dtype = positions.dtype();
-    if dtype.is_equiv_to(&numpy::dtype::<f32>(py)) {
-        shade_typed::<f32>(py, &call, positions, normals, colors, out)
-    } else if dtype.is_equiv_to(&numpy::dtype::<f64>(py)) {
-        shade_typed::<f64>(py, &call, positions, normals, colors, out)
+    match float_of(py, positions, "positions")? {
+        Float::F32 => shade_typed::<f32>(py, &call, positions, normals, colors, out),
+        Float::F64 => shade_typed::<f64>(py, &call, positions, normals, colors, out),
+    }
+}
+
+fn normals_typed<'py, T: Element + Real>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyUntypedArray>,
+    faces: &PyReadonlyArray2<'py, i64>,
+    weighting: Option<Weighting>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let vertices = vertices
+        .cast::<numpy::PyArray2<T>>()
+        .map_err(|_| PyTypeError::new_err("vertices must be a 2-d array"))?
+        .readonly();
+    let v = rows::<T, 3>(&vertices, "vertices")?;
+    let f = rows::<i64, 3>(faces, "faces")?;
+    let rows_out = if weighting.is_some() {
+        v.len()
     } else {
-        Err(PyTypeError::new_err(format!(
-            "positions must be float32 or float64, got {dtype}"
-        )))
+        f.len()
+    };
+    let mut out = vec![[T::ZERO; 3]; rows_out];
+    py.detach(|| match weighting {
+        Some(w) => crate::normals::vertex_normals(v, f, w, &mut out),
+        None => crate::normals::face_normals(v, f, &mut out),
+    })
+    .map_err(to_pyerr)?;
+    Ok(PyArray1::from_vec(py, out.into_flattened())
+        .reshape([rows_out, 3])?
+        .into_any())
+}
+
+/// The unit normal of every face, (m, 3) of the vertices' dtype; see `glshade.face_normals`.
+#[pyfunction]
+fn face_normals<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyUntypedArray>,
+    faces: PyReadonlyArray2<'py, i64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    match float_of(py, vertices, "vertices")? {
+        Float::F32 => normals_typed::<f32>(py, vertices, &faces, None),
+        Float::F64 => normals_typed::<f64>(py, vertices, &faces, None),
+    }
+}
+
+/// The normal of every vertex, (n, 3) of the vertices' dtype; see `glshade.vertex_normals`.
+#[pyfunction]
+fn vertex_normals<'py>(
+    py: Python<'py>,
+    vertices: &Bound<'py, PyUntypedArray>,
+    faces: PyReadonlyArray2<'py, i64>,
+    weighting: &str,
+) -> PyResult<Bound<'py, PyAny>> {
+    let weighting = Some(Weighting::parse(weighting).map_err(to_pyerr)?);
+    match float_of(py, vertices, "vertices")? {
+        Float::F32 => normals_typed::<f32>(py, vertices, &faces, weighting),
+        Float::F64 => normals_typed::<f64>(py, vertices, &faces, weighting),
     }
 }
 
@@ -309,7 +379,10 @@ fn shade<'py>(
 #[pymodule(gil_used = false)]
 mod _glshade {
     #[pymodule_export]
-    use super::{check_lights, check_material, check_scene, output_names, shade};
+    use super::{
+        check_lights, check_material, check_scene, face_normals, output_names, shade,
+        vertex_normals,
+    };
 
     use pyo3::prelude::*;
 

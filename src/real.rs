@@ -85,6 +85,8 @@ pub trait Real:
     const HALF: Self;
     /// The largest finite value.
     const MAX: Self;
+    /// The machine epsilon, 2^-23 or 2^-52.
+    const EPSILON: Self;
     /// The smallest positive normal value.
     const MIN_POSITIVE: Self;
     /// Not a number.
@@ -164,6 +166,7 @@ impl Real for f32 {
     const ONE: Self = 1.0;
     const HALF: Self = 0.5;
     const MAX: Self = f32::MAX;
+    const EPSILON: Self = f32::EPSILON;
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const NAN: Self = f32::NAN;
     // 2^-149 · 2^100 = 2^-49 (its square is normal); 2^128 · 2^-100 = 2^28 (its square is finite).
@@ -192,6 +195,7 @@ impl Real for f64 {
     const ONE: Self = 1.0;
     const HALF: Self = 0.5;
     const MAX: Self = f64::MAX;
+    const EPSILON: Self = f64::EPSILON;
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
     const NAN: Self = f64::NAN;
     // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).

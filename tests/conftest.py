@@ -1,10 +1,20 @@
 """Shared test configuration: hypothesis profiles (HYPOTHESIS_PROFILE=ci|dev|thorough)."""
 
+import importlib
 import os
 
+import pytest
 from hypothesis import HealthCheck, settings
 
 settings.register_profile("dev", max_examples=50)
 settings.register_profile("ci", max_examples=200, suppress_health_check=[HealthCheck.too_slow])
 settings.register_profile("thorough", max_examples=5000)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
+
+
+def require(module: str) -> object:
+    """Imports a reference library: under CI=true a missing one fails the run, elsewhere the
+    test is skipped with the reason."""
+    if os.environ.get("CI"):
+        return importlib.import_module(module)
+    return pytest.importorskip(module, reason=f"{module} is not installed (pip install '.[test]')")

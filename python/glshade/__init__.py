@@ -8,7 +8,17 @@
 """
 
 from ._glshade import __version__
+from ._normals import face_normals, vertex_normals
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 
-__all__ = ["Light", "Lights", "Material", "Scene", "__version__", "shade"]
+__all__ = [
+    "Light",
+    "Lights",
+    "Material",
+    "Scene",
+    "__version__",
+    "face_normals",
+    "shade",
+    "vertex_normals",
+]

@@ -12,8 +12,10 @@ __all__ = [
     "check_lights",
     "check_material",
     "check_scene",
+    "face_normals",
     "output_names",
     "shade",
+    "vertex_normals",
 ]
 
 __version__: str
@@ -49,4 +51,10 @@ def shade(
     color_material: str | None,
     color_material_face: str,
     out: NDArray[np.floating[Any]] | None,
+) -> NDArray[np.floating[Any]]: ...
+def face_normals(
+    vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64]
+) -> NDArray[np.floating[Any]]: ...
+def vertex_normals(
+    vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64], weighting: str
 ) -> NDArray[np.floating[Any]]: ...

@@ -8,6 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import _glshade
+from ._arrays import float_dtype, rows
 from ._scene import Scene
 
 __all__ = ["shade"]
@@ -15,29 +16,6 @@ __all__ = ["shade"]
 FloatArray = NDArray[np.floating[Any]]
 
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
-
-
-def _float_dtype(value: ArrayLike, name: str) -> np.dtype[Any]:
-    """The dtype `value` computes in: float32 or float64 (float16 widens to float32)."""
-    if not isinstance(value, np.ndarray):
-        return np.dtype(np.float64)
-    kind, size = value.dtype.kind, value.dtype.itemsize
-    if kind == "f" and size <= 4:
-        return np.dtype(np.float32)
-    if kind == "f" and size == 8:
-        return np.dtype(np.float64)
-    raise TypeError(f"{name} must be a float32 or float64 array, got dtype {value.dtype}")
-
-
-def _rows(value: ArrayLike, name: str, dtype: np.dtype[Any]) -> FloatArray:
-    """`value` as a C-contiguous 2-d array of `dtype` (a copy only where needed)."""
-    if not isinstance(value, np.ndarray):
-        value = np.asarray(value)
-        if value.dtype.kind not in "fiu":
-            raise TypeError(f"{name} must be real numbers, got dtype {value.dtype}")
-    if value.ndim != 2:
-        raise ValueError(f"{name} must be a 2-d array of shape (n, 3), got shape {value.shape}")
-    return np.ascontiguousarray(value, dtype=dtype)
 
 
 def shade(
@@ -113,14 +91,12 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    dtype = np.result_type(_float_dtype(positions, "positions"), _float_dtype(normals, "normals"))
-    p = _rows(positions, "positions", dtype)
-    n = _rows(normals, "normals", dtype)
+    dtype = np.result_type(float_dtype(positions, "positions"), float_dtype(normals, "normals"))
+    p = rows(positions, "positions", dtype)
+    n = rows(normals, "normals", dtype)
     c = None
     if colors is not None:
-        if isinstance(colors, np.ndarray) and colors.dtype.kind not in "fiu":
-            raise TypeError(f"colors must be real numbers, got dtype {colors.dtype}")
-        c = _rows(colors, "colors", dtype)
+        c = rows(colors, "colors", dtype, width="3 or 4")
         color_material = color_material or "ambient_and_diffuse"
     m = None
     if modelview is not None:

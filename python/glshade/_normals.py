@@ -1,0 +1,106 @@
+"""Face and vertex normals of triangle meshes."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+from numpy.typing import ArrayLike
+
+from . import _glshade
+from ._arrays import FloatArray, float_dtype, indices, rows
+
+__all__ = ["face_normals", "vertex_normals"]
+
+Weighting = Literal["angle", "area", "uniform"]
+
+
+def _mesh(vertices: Any, faces: ArrayLike | None) -> tuple[FloatArray, Any]:
+    """(vertices, faces), taken from a mesh object (trimesh.Trimesh or anything with `.vertices`
+    and `.faces`) when `faces` is None."""
+    if faces is None:
+        if not (hasattr(vertices, "vertices") and hasattr(vertices, "faces")):
+            raise TypeError(
+                "faces is required unless the first argument is a mesh with .vertices and .faces, "
+                f"got {type(vertices)!r}"
+            )
+        vertices, faces = vertices.vertices, vertices.faces
+    v = rows(vertices, "vertices", float_dtype(vertices, "vertices"))
+    return v, indices(faces, "faces")
+
+
+def face_normals(vertices: Any, faces: ArrayLike | None = None) -> FloatArray:
+    """Unit normals of the faces of a triangle mesh.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float32 or float64, or a mesh
+        Vertex positions; or an object with ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``)
+        when `faces` is omitted.
+    faces : (m, 3) int, any integer dtype
+        Vertex indices of each triangle, counter-clockwise seen from the front.
+
+    Returns
+    -------
+    (m, 3) ndarray of the vertices' dtype
+        ``normalize((v1 - v0) x (v2 - v1))`` per face, trimesh's formula bit for bit, or
+        (0, 0, 0) for a degenerate face: one whose first two edges make an angle with
+        ``|sin| <= 8 eps |e0| |e1|``, so the cross product is rounding noise.
+
+    Raises
+    ------
+    IndexError
+        For an index that is negative or not below the vertex count, naming the face.
+    ValueError, TypeError
+        For wrong shapes or dtypes.
+    """
+    v, f = _mesh(vertices, faces)
+    result: FloatArray = _glshade.face_normals(v, f)
+    return result
+
+
+def vertex_normals(
+    vertices: Any, faces: ArrayLike | None = None, weighting: Weighting = "angle"
+) -> FloatArray:
+    """Unit normals of the vertices of a triangle mesh, from the normals of their faces.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float32 or float64, or a mesh
+        Vertex positions; or an object with ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``)
+        when `faces` is omitted.
+    faces : (m, 3) int, any integer dtype
+        Vertex indices of each triangle.
+    weighting : {"angle", "area", "uniform"}
+        ``"angle"`` sums the unit face normals weighted by the corner angle at the vertex
+        (trimesh's ``Trimesh.vertex_normals``); ``"area"`` sums the unnormalised cross products,
+        i.e. weights by area (Open3D's ``compute_vertex_normals``); ``"uniform"`` sums the unit
+        face normals (``trimesh.geometry.mean_vertex_normals``).
+
+    Returns
+    -------
+    (n, 3) ndarray of the vertices' dtype
+        Unit normals; (0, 0, 0) for a vertex no face uses, whose faces are all degenerate, or
+        whose contributions cancel. Sums run in float64 in face order, so the result does not
+        depend on the number of threads.
+
+    Raises
+    ------
+    IndexError
+        For an index that is negative or not below the vertex count, naming the face.
+    ValueError, TypeError
+        For wrong shapes or dtypes, or an unknown `weighting`.
+
+    Examples
+    --------
+    >>> import numpy as np, glshade as gs
+    >>> v = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0]], np.float32)
+    >>> gs.vertex_normals(v, [[0, 1, 2]])
+    array([[0., 0., 1.],
+           [0., 0., 1.],
+           [0., 0., 1.]], dtype=float32)
+    """
+    if not isinstance(weighting, str):
+        raise TypeError(f"weighting must be 'angle', 'area' or 'uniform', got {weighting!r}")
+    v, f = _mesh(vertices, faces)
+    result: FloatArray = _glshade.vertex_normals(v, f, weighting)
+    return result
