@@ -98,28 +98,33 @@ fn cross<T: Real>([a, b, c]: [T::Vec3; 3]) -> T::Vec3 {
     T::Vec3::from_array([y0 * z1 - z0 * y1, z0 * x1 - x0 * z1, x0 * y1 - y0 * x1])
 }
 
-/// The unit normal of a triangle, or zero when it is degenerate (see [`DEGENERATE_ULPS`]).
+/// A triangle's unit normal (zero when degenerate, see [`DEGENERATE_ULPS`]) and the unit
+/// directions of its first two edges, b − a and c − b, which the corner angles reuse.
 #[inline]
-fn unit_normal<T: Real>(tri: [T::Vec3; 3]) -> T::Vec3 {
+fn normal_and_edges<T: Real>(tri: [T::Vec3; 3]) -> (T::Vec3, T::Vec3, T::Vec3) {
     let (unit, length) = normalize_and_length::<T>(cross::<T>(tri));
-    let (_, e0) = normalize_and_length::<T>(tri[1] - tri[0]);
-    let (_, e1) = normalize_and_length::<T>(tri[2] - tri[1]);
+    let (u, l0) = normalize_and_length::<T>(tri[1] - tri[0]);
+    let (w, l1) = normalize_and_length::<T>(tri[2] - tri[1]);
     // |e0 × e1| = |e0||e1| sin θ; compared in f64 so the product of two lengths cannot overflow.
-    if length.to_f64() <= DEGENERATE_ULPS * T::EPSILON.to_f64() * e0.to_f64() * e1.to_f64() {
-        return T::Vec3::ZERO;
-    }
-    unit
+    let degenerate =
+        length.to_f64() <= DEGENERATE_ULPS * T::EPSILON.to_f64() * l0.to_f64() * l1.to_f64();
+    (if degenerate { T::Vec3::ZERO } else { unit }, u, w)
 }
 
-/// trimesh's corner angles: arccos of the unit edges' dot products for corners 0 and 1, π minus
-/// both for corner 2, and all three zero when any is below [`MIN_CORNER_ANGLE`].
+/// trimesh's first two corner angles: the arccos of the unit edges' dot products. `u` and `w`
+/// are the unit edges b − a and c − b.
 #[inline]
-fn corner_angles<T: Real>([a, b, c]: [T::Vec3; 3]) -> [f64; 3] {
-    let u = normalize_or_zero::<T>(b - a);
+fn corner_angles<T: Real>([a, _, c]: [T::Vec3; 3], u: T::Vec3, w: T::Vec3) -> [f64; 2] {
     let v = normalize_or_zero::<T>(c - a);
-    let w = normalize_or_zero::<T>(c - b);
     let a0 = u.dot(v).to_f64().clamp(-1.0, 1.0).acos();
     let a1 = (-u).dot(w).to_f64().clamp(-1.0, 1.0).acos();
+    [a0, a1]
+}
+
+/// trimesh's angle weights from the first two corner angles: the third is π minus both, and all
+/// three are zero when any is below [`MIN_CORNER_ANGLE`].
+#[inline]
+fn corner_weights([a0, a1]: [f64; 2]) -> [f64; 3] {
     let angles = [a0, a1, std::f64::consts::PI - a0 - a1];
     if angles.iter().any(|&x| x < MIN_CORNER_ANGLE) {
         [0.0; 3]
@@ -151,23 +156,83 @@ pub fn face_normals<T: Real>(
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|(dst, src)| {
             for (d, &face) in dst.iter_mut().zip(src) {
-                *d = unit_normal::<T>(corners::<T>(vertices, face)).to_array();
+                *d = normal_and_edges::<T>(corners::<T>(vertices, face))
+                    .0
+                    .to_array();
             }
         });
     Ok(())
 }
 
+/// What the faces add to their vertices: per face the vector that is summed (the unit normal,
+/// zero if degenerate, or the raw cross product for area weighting) and, for angle weighting,
+/// its first two corner angles. 24 or 40 bytes a face: the buffer is written fresh on every
+/// call, so its size is paid in page faults.
+enum FaceTerms {
+    /// Area or uniform weighting: `(vector, unit)`, where `unit` says the vectors are unit normals.
+    Vectors(Vec<glam::DVec3>, bool),
+    /// Angle weighting: the unit normal and the first two corner angles.
+    WithAngles(Vec<(glam::DVec3, [f64; 2])>),
+}
+
+impl FaceTerms {
+    fn new<T: Real>(vertices: &[[T; 3]], faces: &[[i64; 3]], weighting: Weighting) -> Self {
+        let to_f64 = |v: T::Vec3| glam::DVec3::from_array(v.to_array().map(T::to_f64));
+        // One exact-length collect per case (rayon's `unzip` would go through linked chunks).
+        let each = faces
+            .par_iter()
+            .with_min_len(ROWS_PER_TASK)
+            .map(|&face| corners::<T>(vertices, face));
+        match weighting {
+            Weighting::Area => {
+                Self::Vectors(each.map(|tri| to_f64(cross::<T>(tri))).collect(), false)
+            }
+            Weighting::Uniform => Self::Vectors(
+                each.map(|tri| to_f64(normal_and_edges::<T>(tri).0))
+                    .collect(),
+                true,
+            ),
+            Weighting::Angle => Self::WithAngles(
+                each.map(|tri| {
+                    let (normal, u, w) = normal_and_edges::<T>(tri);
+                    (to_f64(normal), corner_angles::<T>(tri, u, w))
+                })
+                .collect(),
+            ),
+        }
+    }
+
+    /// The term corner `k` (`3·face + corner`) adds to its vertex, and the term's length.
+    #[inline]
+    fn corner(&self, k: usize) -> (glam::DVec3, f64) {
+        match self {
+            Self::Vectors(vectors, false) => (vectors[k / 3], vectors[k / 3].length()),
+            Self::Vectors(vectors, true) => {
+                let v = vectors[k / 3];
+                (v, if v == glam::DVec3::ZERO { 0.0 } else { 1.0 })
+            }
+            Self::WithAngles(terms) => {
+                let (normal, angles) = terms[k / 3];
+                let weight = corner_weights(angles)[k % 3];
+                (normal * weight, weight)
+            }
+        }
+    }
+}
+
 /// The vertex-to-face adjacency in compressed-sparse-row form: the face corners of vertex `v`
 /// are `corners[offsets[v]..offsets[v + 1]]`, each `3·face + corner`, in increasing face order.
+/// `u32` halves the memory traffic of the gather; meshes are limited to 2^32 corners.
 struct Adjacency {
-    offsets: Vec<usize>,
-    corners: Vec<usize>,
+    offsets: Vec<u32>,
+    corners: Vec<u32>,
 }
 
 impl Adjacency {
     /// A counting sort of the corners by vertex: stable, so each vertex lists its faces in order.
-    fn new(faces: &[[i64; 3]], vertex_count: usize) -> Self {
-        let mut offsets = vec![0usize; vertex_count + 1];
+    /// `corner_count` is `3 · faces.len()`, which the caller has checked fits in `u32`.
+    fn new(faces: &[[i64; 3]], vertex_count: usize, corner_count: u32) -> Self {
+        let mut offsets = vec![0u32; vertex_count + 1];
         for &v in faces.as_flattened() {
             offsets[index(v) + 1] += 1;
         }
@@ -175,10 +240,11 @@ impl Adjacency {
             offsets[i + 1] += offsets[i];
         }
         let mut next = offsets[..vertex_count].to_vec();
-        let mut corners = vec![0usize; offsets[vertex_count]];
-        for (k, &v) in faces.as_flattened().iter().enumerate() {
-            corners[next[index(v)]] = k;
-            next[index(v)] += 1;
+        let mut corners = vec![0u32; corner_count as usize];
+        for (k, &v) in (0..corner_count).zip(faces.as_flattened()) {
+            let slot = &mut next[index(v)];
+            corners[*slot as usize] = k;
+            *slot += 1;
         }
         Self { offsets, corners }
     }
@@ -206,38 +272,32 @@ pub fn vertex_normals<T: Real>(
             out.len()
         )));
     }
-    // Per face: the vector that is summed, and per corner its weight.
-    let mut vectors = vec![[0.0f64; 3]; faces.len()];
-    let mut weights = vec![[1.0f64; 3]; faces.len()];
-    vectors
-        .par_chunks_mut(ROWS_PER_TASK)
-        .zip(weights.par_chunks_mut(ROWS_PER_TASK))
-        .zip(faces.par_chunks(ROWS_PER_TASK))
-        .for_each(|((vs, ws), fs)| {
-            for ((v, w), &face) in vs.iter_mut().zip(ws.iter_mut()).zip(fs) {
-                let tri = corners::<T>(vertices, face);
-                let vector = match weighting {
-                    Weighting::Area => cross::<T>(tri),
-                    Weighting::Angle | Weighting::Uniform => unit_normal::<T>(tri),
-                };
-                *v = vector.to_array().map(T::to_f64);
-                if weighting == Weighting::Angle {
-                    *w = corner_angles::<T>(tri);
-                }
-            }
-        });
-    let adjacency = Adjacency::new(faces, vertices.len());
-    let weights = weights.as_flattened();
+    let corner_count = u32::try_from(faces.len() * 3).map_err(|_| {
+        Error::value(format!(
+            "faces must have at most {} rows, got {}",
+            u32::MAX / 3,
+            faces.len()
+        ))
+    })?;
+    // The adjacency's counting sort is sequential: build it while the faces are computed.
+    let (adjacency, terms) = rayon::join(
+        || Adjacency::new(faces, vertices.len(), corner_count),
+        || FaceTerms::new(vertices, faces, weighting),
+    );
     out.par_chunks_mut(ROWS_PER_TASK)
         .enumerate()
         .for_each(|(t, dst)| {
             for (j, d) in dst.iter_mut().enumerate() {
                 let v = t * ROWS_PER_TASK + j;
+                let (start, end) = (
+                    adjacency.offsets[v] as usize,
+                    adjacency.offsets[v + 1] as usize,
+                );
                 let (mut sum, mut magnitude) = (glam::DVec3::ZERO, 0.0);
-                for &k in &adjacency.corners[adjacency.offsets[v]..adjacency.offsets[v + 1]] {
-                    let term = glam::DVec3::from_array(vectors[k / 3]) * weights[k];
+                for &k in &adjacency.corners[start..end] {
+                    let (term, length) = terms.corner(k as usize);
                     sum += term;
-                    magnitude += term.length();
+                    magnitude += length;
                 }
                 let cancelled = sum.length() <= CANCELLED_ULPS * T::EPSILON.to_f64() * magnitude;
                 *d = if cancelled {

@@ -52,3 +52,19 @@ def test_png_round_trip(tmp_path: Path) -> None:
     np.testing.assert_array_equal(rows[:, 1:].reshape(5, 7, 4), expected)
     with pytest.raises(ValueError, match="height, width, 4"):
         write_png(tmp_path / "y.png", image[..., :3])
+
+
+def test_bench_normals_runs_beside_trimesh() -> None:
+    from conftest import require
+
+    require("trimesh")
+    run = subprocess.run(
+        [sys.executable, "-m", "glshade", "bench", "normals", "--faces", "2000", "--repeat", "2"],
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    assert "trimesh vertex_normals" in run.stdout
+    assert "speed-up over trimesh" in run.stdout
+    difference = float(run.stdout.split("angle weighting, float64:")[1].split()[0])
+    assert difference < 1e-12

@@ -15,6 +15,7 @@ from numpy.typing import NDArray
 
 import glshade as gs
 
+from ._bench import bench_normals
 from ._png import write_png
 
 
@@ -106,9 +107,19 @@ def main(argv: Sequence[str] | None = None) -> int:
     run.add_argument(
         "--output", default="glshade-demo.png", help="PNG path (default ./glshade-demo.png)"
     )
+    bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
+    bench.add_argument("what", choices=["normals"], help="what to time")
+    bench.add_argument("--faces", type=int, default=1_000_000, help="mesh size (default 10^6)")
+    bench.add_argument("--repeat", type=int, default=7, help="rounds (default 7)")
     args = parser.parse_args(argv)
-    if args.size < 1 or args.repeat < 1:
-        parser.error("--size and --repeat must be positive")
+    if args.repeat < 1:
+        parser.error("--repeat must be positive")
+    if args.command == "bench":
+        if args.faces < 2:
+            parser.error("--faces must be at least 2")
+        return bench_normals(args.faces, args.repeat)
+    if args.size < 1:
+        parser.error("--size must be positive")
     return demo(args.size, args.repeat, args.output)
 
 
