@@ -299,11 +299,12 @@ pub fn vertex_normals<T: Real>(
                     sum += term;
                     magnitude += length;
                 }
-                let cancelled = sum.length() <= CANCELLED_ULPS * T::EPSILON.to_f64() * magnitude;
+                let (unit, length) = normalize_and_length::<f64>(sum);
+                let cancelled = length <= CANCELLED_ULPS * T::EPSILON.to_f64() * magnitude;
                 *d = if cancelled {
                     [T::ZERO; 3]
                 } else {
-                    normalize_or_zero::<f64>(sum).to_array().map(T::from_f64)
+                    unit.to_array().map(T::from_f64)
                 };
             }
         });
