@@ -76,6 +76,18 @@ pub fn check_faces(faces: &[[i64; 3]], vertex_count: usize) -> Result<(), Error>
     Ok(())
 }
 
+/// Checks that an output has `rows` rows.
+fn check_rows<R>(out: &[R], rows: usize) -> Result<(), Error> {
+    if out.len() == rows {
+        Ok(())
+    } else {
+        Err(Error::value(format!(
+            "out must have {rows} rows, got {}",
+            out.len()
+        )))
+    }
+}
+
 /// A vertex index that [`check_faces`] has proven to be in `0..vertex_count`.
 #[inline]
 #[allow(clippy::cast_sign_loss)]
@@ -145,13 +157,7 @@ pub fn face_normals<T: Real>(
     out: &mut [[T; 3]],
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
-    if out.len() != faces.len() {
-        return Err(Error::value(format!(
-            "out must have {} rows, got {}",
-            faces.len(),
-            out.len()
-        )));
-    }
+    check_rows(out, faces.len())?;
     out.par_chunks_mut(ROWS_PER_TASK)
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|(dst, src)| {
@@ -265,13 +271,7 @@ pub fn vertex_normals<T: Real>(
     out: &mut [[T; 3]],
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
-    if out.len() != vertices.len() {
-        return Err(Error::value(format!(
-            "out must have {} rows, got {}",
-            vertices.len(),
-            out.len()
-        )));
-    }
+    check_rows(out, vertices.len())?;
     let corner_count = u32::try_from(faces.len() * 3).map_err(|_| {
         Error::value(format!(
             "faces must have at most {} rows, got {}",

@@ -192,8 +192,6 @@ impl<T: Real> Prepared<T> {
             Viewer::Infinite(v) => v,
             Viewer::Local(e) => normalize_or_zero::<T>(e - p),
         };
-        let materials = [self.material(0, color), self.material(1, color)];
-
         let mut ambient = DVec3::ZERO;
         let mut sums = [SideSums::default(); 2];
         for light in &self.lights {
@@ -217,7 +215,8 @@ impl<T: Real> Prepared<T> {
 
         let mut out = [[0.0; 4]; 4];
         let mut k = 0;
-        for (m, sum) in materials.iter().zip(&sums).take(self.sides) {
+        for (side, sum) in sums.iter().enumerate().take(self.sides) {
+            let m = self.material(side, color);
             let a = rgb(m.ambient);
             let lit = rgb(m.emission)
                 + a * self.global_ambient
