@@ -111,9 +111,6 @@ pub trait Real:
     /// `e^self`.
     #[must_use]
     fn exp(self) -> Self;
-    /// `self^e` (IEEE `pow`: `0^0 = 1`).
-    #[must_use]
-    fn powf(self, e: Self) -> Self;
     /// The smaller of two numbers (the non-NaN one if one is NaN).
     #[must_use]
     fn min(self, other: Self) -> Self;
@@ -140,10 +137,6 @@ macro_rules! impl_real_common {
         #[inline]
         fn exp(self) -> Self {
             self.exp()
-        }
-        #[inline]
-        fn powf(self, e: Self) -> Self {
-            self.powf(e)
         }
         #[inline]
         fn min(self, other: Self) -> Self {
