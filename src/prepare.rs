@@ -233,13 +233,29 @@ pub struct Prepared<T: Real> {
     pub color_material: Option<ColorMaterial>,
 }
 
+/// The point (x, y, z)/w of a homogeneous `h` with w != 0, in the kernel's type.
+///
+/// # Errors
+/// A value error naming `what()` when the point is beyond the type's range.
+fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<T::Vec3, Error> {
+    let point = cast::<T>(DVec3::new(h[0], h[1], h[2]) / h[3]);
+    if point.is_finite() {
+        Ok(point)
+    } else {
+        Err(Error::value(format!(
+            "{} must lie within the range of the input dtype, got {h:?}",
+            what()
+        )))
+    }
+}
+
 fn prepare_light<T: Real>(
     light: &Light,
     index: usize,
     viewer: Option<DVec3>,
     blinn: bool,
 ) -> Result<PreparedLight<T>, Error> {
-    let [x, y, z, w] = light.position;
+    let [x, y, z, _] = light.position;
     let spot = light.is_spot().then(|| Spot {
         direction: cast::<T>(normalize_or_zero::<f64>(DVec3::from_array(
             light.spot_direction,
@@ -264,13 +280,7 @@ fn prepare_light<T: Real>(
             spot: spot.map_or(T::ONE, |s| s.factor(-vp)),
         }
     } else {
-        let position = cast::<T>(DVec3::new(x, y, z) / w);
-        if !position.is_finite() {
-            return Err(Error::value(format!(
-                "position of light {index} must lie within the range of the input dtype, got {:?}",
-                light.position
-            )));
-        }
+        let position = eye_point::<T>(light.position, || format!("position of light {index}"))?;
         let attenuation = [
             light.constant_attenuation,
             light.linear_attenuation,
@@ -303,13 +313,7 @@ impl<T: Real> Prepared<T> {
         let viewer = if let Some(v) = infinite_view {
             Viewer::Infinite(cast::<T>(v))
         } else {
-            let point = cast::<T>(DVec3::new(x, y, z) / w);
-            if !point.is_finite() {
-                return Err(Error::value(format!(
-                    "viewer must lie within the range of the input dtype, got {:?}",
-                    scene.viewer
-                )));
-            }
+            let point = eye_point::<T>(scene.viewer, || "viewer".to_owned())?;
             Viewer::Local(point)
         };
         let blinn = scene.specular == Specular::Blinn;

@@ -327,7 +327,12 @@ fn normals_typed<'py, T: Element + Real>(
 ) -> PyResult<Bound<'py, PyAny>> {
     let vertices = vertices
         .cast::<numpy::PyArray2<T>>()
-        .map_err(|_| PyTypeError::new_err("vertices must be a 2-d array"))?
+        .map_err(|_| {
+            PyValueError::new_err(format!(
+                "vertices must be a 2-d array, got {}-d",
+                vertices.ndim()
+            ))
+        })?
         .readonly();
     let v = rows::<T, 3>(&vertices, "vertices")?;
     let f = rows::<i64, 3>(faces, "faces")?;
