@@ -27,8 +27,6 @@ for _name, _width in _glshade.LIGHT_LAYOUT:
     _start += _width
 _LIGHT_ROW_LEN = _start
 
-_COLOURS = ("ambient", "diffuse", "specular")
-
 
 def _frozen(a: Float64Array) -> Float64Array:
     a.flags.writeable = False

@@ -2,18 +2,16 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Literal
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import float_dtype, rows
+from ._arrays import FloatArray, float_dtype, rows
 from ._scene import Scene
 
 __all__ = ["shade"]
-
-FloatArray = NDArray[np.floating[Any]]
 
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
 
