@@ -1,0 +1,171 @@
+//! The binding of `shade`.
+
+use numpy::{
+    Element, PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyUntypedArray, PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+use super::{float_of, rows, scene_from, to_pyerr, Float};
+use crate::material::ColorMaterial;
+use crate::prepare::ShadeOptions;
+use crate::real::Real;
+use crate::scene::Scene;
+use crate::shade::VertexColors;
+
+/// Every argument of `shade` that does not depend on the dtype.
+struct Call {
+    scene: Scene,
+    options: ShadeOptions,
+}
+
+fn shade_typed<'py, T: Element + Real>(
+    py: Python<'py>,
+    call: &Call,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    out: Option<&Bound<'py, PyUntypedArray>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let cast = |a: &Bound<'py, PyUntypedArray>, name: &str| -> PyResult<PyReadonlyArray2<'py, T>> {
+        let typed = a.cast::<numpy::PyArray2<T>>().map_err(|_| {
+            PyTypeError::new_err(format!(
+                "{name} must be a 2-d array of {} like positions, got a {}-d array of {}",
+                numpy::dtype::<T>(py),
+                a.ndim(),
+                a.dtype()
+            ))
+        })?;
+        Ok(typed.readonly())
+    };
+    let positions = cast(positions, "positions")?;
+    let normals = cast(normals, "normals")?;
+    let colors = colors.map(|c| cast(c, "colors")).transpose()?;
+    let n = positions.shape()[0];
+    let (p, nr) = (
+        rows::<T, 3>(&positions, "positions")?,
+        rows::<T, 3>(&normals, "normals")?,
+    );
+    let vertex_colors = match &colors {
+        Some(c) if c.shape()[1] == 3 => Some(VertexColors {
+            data: rows::<T, 3>(c, "colors")?.as_flattened(),
+            width: 3,
+        }),
+        Some(c) if c.shape()[1] == 4 => Some(VertexColors {
+            data: rows::<T, 4>(c, "colors")?.as_flattened(),
+            width: 4,
+        }),
+        Some(c) => {
+            return Err(PyValueError::new_err(format!(
+                "colors must have shape ({n}, 3) or ({n}, 4), got {:?}",
+                c.shape()
+            )))
+        }
+        None => None,
+    };
+    let planes = call.scene.output_count();
+    let shape: Vec<usize> = if planes == 1 {
+        vec![n, 4]
+    } else {
+        vec![planes, n, 4]
+    };
+    let run =
+        |dst: &mut [T]| crate::shade::shade(&call.scene, p, nr, vertex_colors, &call.options, dst);
+    let Some(out) = out else {
+        let mut dst = vec![T::ZERO; planes * n * 4];
+        py.detach(|| run(&mut dst)).map_err(to_pyerr)?;
+        return Ok(PyArray1::from_vec(py, dst).reshape(shape)?.into_any());
+    };
+    let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "out must be an array of {}, got {}",
+            numpy::dtype::<T>(py),
+            out.dtype()
+        ))
+    })?;
+    if array.shape() != shape.as_slice() {
+        return Err(PyValueError::new_err(format!(
+            "out must have shape {shape:?}, got {:?}",
+            array.shape()
+        )));
+    }
+    let mut rw = array
+        .try_readwrite()
+        .map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
+    let dst = rw
+        .as_slice_mut()
+        .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
+    py.detach(|| run(dst)).map_err(to_pyerr)?;
+    Ok(array.clone().into_any())
+}
+
+/// Lights the vertices; see `glshade.shade` for the arguments, which arrive here already
+/// coerced (C-contiguous float32 or float64 arrays, light and material tables as float64).
+#[pyfunction]
+#[pyo3(signature = (
+    positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
+    separate_specular, specular, modelview, normalize, rescale_normal, colors, color_material,
+    color_material_face, out
+))]
+pub fn shade<'py>(
+    py: Python<'py>,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    lights: PyReadonlyArray2<'py, f64>,
+    material: PyReadonlyArray1<'py, f64>,
+    back_material: PyReadonlyArray1<'py, f64>,
+    global_ambient: PyReadonlyArray1<'py, f64>,
+    viewer: PyReadonlyArray1<'py, f64>,
+    two_side: bool,
+    separate_specular: bool,
+    specular: &str,
+    modelview: Option<PyReadonlyArray2<'py, f64>>,
+    normalize: bool,
+    rescale_normal: bool,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    color_material: Option<&str>,
+    color_material_face: &str,
+    out: Option<&Bound<'py, PyUntypedArray>>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let modelview = match &modelview {
+        Some(m) => {
+            let r = rows::<f64, 4>(m, "modelview")?;
+            if r.len() != 4 {
+                return Err(PyValueError::new_err(format!(
+                    "modelview must have shape (4, 4), got {:?}",
+                    m.shape()
+                )));
+            }
+            Some(glam::DMat4::from_cols_array_2d(&[r[0], r[1], r[2], r[3]]).transpose())
+        }
+        None => None,
+    };
+    let color_material = color_material
+        .map(|mode| ColorMaterial::parse(mode, color_material_face))
+        .transpose()
+        .map_err(to_pyerr)?;
+    let scene = scene_from(
+        &lights,
+        &material,
+        &back_material,
+        &global_ambient,
+        &viewer,
+        two_side,
+        separate_specular,
+        specular,
+    )?;
+    let call = Call {
+        scene,
+        options: ShadeOptions {
+            modelview,
+            normalize,
+            rescale_normal,
+            color_material,
+        },
+    };
+    match float_of(py, positions, "positions")? {
+        Float::F32 => shade_typed::<f32>(py, &call, positions, normals, colors, out),
+        Float::F64 => shade_typed::<f64>(py, &call, positions, normals, colors, out),
+    }
+}
