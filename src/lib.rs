@@ -7,10 +7,15 @@
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
 //! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
 
+pub mod dispatch;
+pub mod elementary;
 pub mod error;
+pub mod kernel;
+pub mod lanes;
 pub mod light;
 pub mod material;
 pub mod normals;
+pub mod plan;
 pub mod prepare;
 pub mod real;
 pub mod scene;
@@ -20,9 +25,10 @@ pub use error::{Error, ErrorKind};
 pub use light::Light;
 pub use material::{ColorMaterial, ColorMaterialMode, Face, Material};
 pub use normals::{face_normals, vertex_normals, Weighting};
-pub use prepare::ShadeOptions;
+pub use plan::Plan;
+pub use prepare::{Accuracy, ShadeOptions};
 pub use scene::{Scene, Specular};
-pub use shade::{shade, VertexColors};
+pub use shade::{describe, shade, VertexColors};
 
 #[cfg(feature = "python")]
 mod python;

@@ -5,78 +5,42 @@
 use glam::{DMat4, DVec3};
 
 use crate::error::Error;
+use crate::lanes::V3;
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::real::{normalize_or_zero, Real, Vector3};
+use crate::real::{normalize_or_zero, Real};
 use crate::scene::{Scene, Specular};
 
-/// Every colour, per-light weight and per-vertex colour is clamped to ±2^240 before it is
-/// multiplied. Four such factors times 2^32 lights stay below 2^1023, so no finite input can
-/// produce `inf·0` or `inf − inf` in the `f64` sums. The bound is reachable only by `f64` input
-/// (f32 values stop at 2^128), and only by sums far beyond anything that survives the clamp:
-/// without `normalize`, |n| = 1.3 and s = 128 legitimately give 10^35.
-pub const SATURATION: f64 = f64::from_bits((1023 + 240) << 52);
-
-/// `x` clamped to [−[`SATURATION`], [`SATURATION`]].
+/// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
+/// to `T`.
 #[inline]
-pub fn saturate(x: f64) -> f64 {
-    x.clamp(-SATURATION, SATURATION)
+fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
+    let sat = T::COLOR_SATURATION.to_f64();
+    [c[0], c[1], c[2]].map(|x| T::from_f64(x.clamp(-sat, sat)))
 }
 
-/// The RGB of an RGBA colour, saturated.
+/// The RGBA of `c`, saturated and rounded to `T`.
 #[inline]
-pub fn rgb(c: [f64; 4]) -> DVec3 {
-    DVec3::new(saturate(c[0]), saturate(c[1]), saturate(c[2]))
+fn rgba<T: Real>(c: [f64; 4]) -> [T; 4] {
+    let [r, g, b] = rgb::<T>(c);
+    let sat = T::COLOR_SATURATION.to_f64();
+    [r, g, b, T::from_f64(c[3].clamp(-sat, sat))]
 }
 
 /// Rounds an `f64` vector to the kernel's type.
-fn cast<T: Real>(v: DVec3) -> T::Vec3 {
-    T::Vec3::from_array(v.to_array().map(T::from_f64))
+fn cast<T: Real>(v: DVec3) -> [T; 3] {
+    v.to_array().map(T::from_f64)
 }
 
 /// A spot light's cone, in the kernel's type.
 #[derive(Clone, Copy, Debug)]
 pub struct Spot<T: Real> {
     /// ŝ_dli, the unit spot direction.
-    pub direction: T::Vec3,
+    pub direction: [T; 3],
     /// cos(c_rli); exactly 0 for a 90° cutoff (f32 `cos(π/2)` is −4.4e-8, f64 +6.1e-17).
     pub cos_cutoff: T,
     /// s_rli.
     pub exponent: T,
-}
-
-impl<T: Real> Spot<T> {
-    /// spot_i of eq. 2.5 for the unit light-to-vertex vector `to_vertex` (P_pli→V): 0 outside the
-    /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
-    #[inline]
-    pub fn factor(&self, to_vertex: T::Vec3) -> T {
-        let c = to_vertex.dot(self.direction).max(T::ZERO);
-        if c < self.cos_cutoff {
-            return T::ZERO;
-        }
-        cos_pow(c, to_vertex, self.direction, self.exponent, T::ZERO)
-    }
-}
-
-/// `(max(â·b̂, 0))^s · e^(s·ln_scale)` for unit `a`, `b` whose dot product is `cos`, with 0^0 = 1.
-///
-/// 1 − â·b̂ is taken as |â − b̂|²/2, which has no cancellation near the highlight, and the power as
-/// `exp(s·ln(1 − x))`: the error stays a few ulp at any exponent instead of growing as s·ulp.
-/// `ln_scale` carries `ln |a|` when `a` stands for a vector that was not unit to begin with.
-#[inline]
-pub fn cos_pow<T: Real>(cos: T, a: T::Vec3, b: T::Vec3, s: T, ln_scale: T) -> T {
-    if s == T::ZERO {
-        return T::ONE;
-    }
-    if cos <= T::ZERO {
-        return T::ZERO;
-    }
-    let d = a - b;
-    let x = T::HALF * d.dot(d);
-    if x >= T::ONE {
-        return T::ZERO;
-    }
-    (s * ((-x).ln_1p() + ln_scale)).exp().min(T::MAX)
 }
 
 /// Where a light's rays come from.
@@ -86,16 +50,16 @@ pub enum Source<T: Real> {
     /// per-light constant too (eq. 2.5 applies to directional lights with P_pli→V = −VP).
     Directional {
         /// VP_pli, unit.
-        vp: T::Vec3,
+        vp: [T; 3],
         /// ĥ for an infinite viewer with Blinn specular (a per-light constant then), else `None`.
-        halfway: Option<T::Vec3>,
+        halfway: Option<[T; 3]>,
         /// spot_i.
         spot: T,
     },
     /// `position.w != 0`: a point light at `position`.
     Positional {
         /// The light's eye-space point, (x, y, z)/w.
-        position: T::Vec3,
+        position: [T; 3],
         /// k0, k1, k2.
         attenuation: [T; 3],
         /// The cone, or `None` for `spot_cutoff == 180`.
@@ -103,53 +67,82 @@ pub enum Source<T: Real> {
     },
 }
 
-/// One light, ready for the kernel: geometry in `T`, colours in `f64`.
+/// One light, ready for the kernel, in its type.
 #[derive(Clone, Copy, Debug)]
 pub struct PreparedLight<T: Real> {
     /// The light's geometry.
     pub source: Source<T>,
     /// a_cli (RGB, saturated).
-    pub ambient: DVec3,
+    pub ambient: [T; 3],
     /// d_cli.
-    pub diffuse: DVec3,
+    pub diffuse: [T; 3],
     /// s_cli.
-    pub specular: DVec3,
+    pub specular: [T; 3],
 }
 
 /// The viewer: VP_e is a constant for an infinite viewer, per vertex for a local one.
 #[derive(Clone, Copy, Debug)]
 pub enum Viewer<T: Real> {
     /// The unit direction towards the viewer.
-    Infinite(T::Vec3),
+    Infinite([T; 3]),
     /// The viewer's eye-space point.
-    Local(T::Vec3),
+    Local([T; 3]),
+}
+
+/// One side's material in the kernel's type: RGBA colours saturated, and the shininess.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SideMaterial<T: Real> {
+    /// a_cm.
+    pub ambient: [T; 4],
+    /// d_cm (its alpha is the output alpha).
+    pub diffuse: [T; 4],
+    /// s_cm.
+    pub specular: [T; 4],
+    /// e_cm.
+    pub emission: [T; 4],
+    /// s_rm.
+    pub shininess: T,
+}
+
+impl<T: Real> SideMaterial<T> {
+    fn new(m: &Material) -> Self {
+        Self {
+            ambient: rgba(m.ambient),
+            diffuse: rgba(m.diffuse),
+            specular: rgba(m.specular),
+            emission: rgba(m.emission),
+            shininess: T::from_f64(m.shininess),
+        }
+    }
 }
 
 /// The modelview and its normal matrix, as columns in `T`.
 #[derive(Clone, Copy, Debug)]
 pub struct Transform<T: Real> {
-    linear: [T::Vec3; 3],
-    translation: T::Vec3,
-    normal: [T::Vec3; 3],
+    linear: [[T; 3]; 3],
+    translation: [T; 3],
+    normal: [[T; 3]; 3],
 }
 
-#[inline]
-fn mul3<T: Real>(columns: &[T::Vec3; 3], v: T::Vec3) -> T::Vec3 {
-    let [x, y, z] = v.to_array();
-    columns[0] * x + columns[1] * y + columns[2] * z
+/// `columns · v`, summed column by column (x, then y, then z) like glam's `Mat3 * Vec3`.
+#[inline(always)]
+fn mul3<T: Real, const N: usize>(columns: &[[T; 3]; 3], v: V3<T, N>) -> V3<T, N> {
+    V3::splat(columns[0]).scale(v.x)
+        + V3::splat(columns[1]).scale(v.y)
+        + V3::splat(columns[2]).scale(v.z)
 }
 
 impl<T: Real> Transform<T> {
-    /// The eye-space position M·(p, 1).
-    #[inline]
-    pub fn point(&self, p: T::Vec3) -> T::Vec3 {
-        mul3::<T>(&self.linear, p) + self.translation
+    /// The eye-space positions M·(p, 1).
+    #[inline(always)]
+    pub fn point<const N: usize>(&self, p: V3<T, N>) -> V3<T, N> {
+        mul3(&self.linear, p) + V3::splat(self.translation)
     }
 
-    /// The eye-space normal (M⁻¹)ᵀ·n, times the rescale factor if asked for.
-    #[inline]
-    pub fn normal(&self, n: T::Vec3) -> T::Vec3 {
-        mul3::<T>(&self.normal, n)
+    /// The eye-space normals (M⁻¹)ᵀ·n, times the rescale factor if asked for.
+    #[inline(always)]
+    pub fn normal<const N: usize>(&self, n: V3<T, N>) -> V3<T, N> {
+        mul3(&self.normal, n)
     }
 
     /// The transform of an affine `modelview` (last row (0, 0, 0, 1)); with `rescale_normal`,
@@ -192,6 +185,32 @@ impl<T: Real> Transform<T> {
     }
 }
 
+/// The arithmetic a `shade` call computes in.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Accuracy {
+    /// The input's precision: `f32` for `f32` input, `f64` for `f64` (the default).
+    #[default]
+    Fast,
+    /// `f64` throughout, whatever the input; `f32` results are rounded once at the end.
+    Exact,
+}
+
+impl Accuracy {
+    /// Parses `"fast"` or `"exact"`.
+    ///
+    /// # Errors
+    /// A value error naming `accuracy` for any other string.
+    pub fn parse(name: &str) -> Result<Self, Error> {
+        match name {
+            "fast" => Ok(Self::Fast),
+            "exact" => Ok(Self::Exact),
+            _ => Err(Error::value(format!(
+                "accuracy must be 'fast' or 'exact', got '{name}'"
+            ))),
+        }
+    }
+}
+
 /// The per-vertex options of a `shade` call (everything `glEnable` and `glColorMaterial` set
 /// that is not part of the [`Scene`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -204,6 +223,11 @@ pub struct ShadeOptions {
     pub rescale_normal: bool,
     /// `GL_COLOR_MATERIAL`, used with per-vertex colours.
     pub color_material: Option<ColorMaterial>,
+    /// The arithmetic to compute in.
+    pub accuracy: Accuracy,
+    /// GL's parameter ranges: reject shininess and spot exponents above 128 (GL's
+    /// `GL_INVALID_VALUE`), which glshade otherwise accepts.
+    pub strict: bool,
 }
 
 /// A scene and its options, prepared for one kernel type.
@@ -212,11 +236,9 @@ pub struct Prepared<T: Real> {
     /// The lights, in summation order.
     pub lights: Vec<PreparedLight<T>>,
     /// Front and back materials (the back one is used with two-sided lighting only).
-    pub materials: [Material; 2],
-    /// Front and back shininess in the kernel's type.
-    pub shininess: [T; 2],
+    pub materials: [SideMaterial<T>; 2],
     /// a_cs (RGB, saturated).
-    pub global_ambient: DVec3,
+    pub global_ambient: [T; 3],
     /// The viewer.
     pub viewer: Viewer<T>,
     /// The modelview, if any.
@@ -229,6 +251,8 @@ pub struct Prepared<T: Real> {
     pub separate_specular: bool,
     /// Blinn or Phong.
     pub specular: Specular,
+    /// f_i of eq. 2.2: no specular unless n·VP > 0.
+    pub specular_gate: bool,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,
 }
@@ -237,9 +261,9 @@ pub struct Prepared<T: Real> {
 ///
 /// # Errors
 /// A value error naming `what()` when the point is beyond the type's range.
-fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<T::Vec3, Error> {
+fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<[T; 3], Error> {
     let point = cast::<T>(DVec3::new(h[0], h[1], h[2]) / h[3]);
-    if point.is_finite() {
+    if point.iter().all(|x| x.is_finite()) {
         Ok(point)
     } else {
         Err(Error::value(format!(
@@ -274,11 +298,11 @@ fn prepare_light<T: Real>(
             _ => None,
         };
         let vp = cast::<T>(vp);
-        Source::Directional {
-            vp,
-            halfway,
-            spot: spot.map_or(T::ONE, |s| s.factor(-vp)),
-        }
+        let spot = spot.map_or(T::ONE, |s| {
+            let to_vertex = -V3::<T, 1>::splat(vp);
+            crate::kernel::spot_factor(&s, to_vertex).0[0]
+        });
+        Source::Directional { vp, halfway, spot }
     } else {
         let position = eye_point::<T>(light.position, || format!("position of light {index}"))?;
         let attenuation = [
@@ -308,6 +332,9 @@ impl<T: Real> Prepared<T> {
     /// Any failure of [`Scene::validate`] or [`Transform::new`].
     pub fn new(scene: &Scene, options: &ShadeOptions) -> Result<Self, Error> {
         scene.validate()?;
+        if options.strict {
+            scene.validate_gl_ranges()?;
+        }
         let [x, y, z, w] = scene.viewer;
         let infinite_view = (w == 0.0).then(|| normalize_or_zero::<f64>(DVec3::new(x, y, z)));
         let viewer = if let Some(v) = infinite_view {
@@ -328,11 +355,9 @@ impl<T: Real> Prepared<T> {
             .as_ref()
             .map(|m| Transform::new(m, options.rescale_normal))
             .transpose()?;
-        let materials = [scene.material, scene.back_material];
         Ok(Self {
             lights,
-            materials,
-            shininess: materials.map(|m| T::from_f64(m.shininess)),
+            materials: [&scene.material, &scene.back_material].map(SideMaterial::new),
             global_ambient: rgb(scene.global_ambient),
             viewer,
             transform,
@@ -340,6 +365,7 @@ impl<T: Real> Prepared<T> {
             sides: 1 + usize::from(scene.two_side),
             separate_specular: scene.separate_specular,
             specular: scene.specular,
+            specular_gate: true,
             color_material: options.color_material,
         })
     }
@@ -348,49 +374,21 @@ impl<T: Real> Prepared<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use glam::Vec3;
+    use crate::kernel::spot_factor;
 
-    #[test]
-    fn cos_pow_matches_powf_and_pins_zero_to_the_zero() {
-        let a = Vec3::new(0.6, 0.8, 0.0);
-        let b = Vec3::X;
-        let c = a.dot(b);
-        assert!((cos_pow::<f32>(c, a, b, 3.0, 0.0) - 0.216).abs() < 1e-6);
-        assert_eq!(cos_pow::<f32>(0.0, Vec3::X, Vec3::Y, 0.0, 0.0), 1.0);
-        assert_eq!(cos_pow::<f32>(-0.5, -a, b, 0.0, 0.0), 1.0);
-        assert_eq!(cos_pow::<f32>(-0.5, -a, b, 2.0, 0.0), 0.0);
-        assert_eq!(cos_pow::<f32>(1.0, b, b, 1e6, 0.0), 1.0);
-    }
-
-    #[test]
-    fn cos_pow_is_stable_at_high_exponents() {
-        // θ = 1e-3 rad: (cos θ)^1e6 = exp(1e6·ln cos θ) ≈ e^-0.5.
-        let theta = 1e-3_f64;
-        let exact = (1e6 * theta.cos().ln()).exp();
-        let a = Vec3::new(theta.sin() as f32, 0.0, theta.cos() as f32);
-        let got = f64::from(cos_pow::<f32>(a.z, a, Vec3::Z, 1e6, 0.0));
-        assert!((got - exact).abs() / exact < 2e-3, "{got} vs {exact}");
-        let naive = f64::from(a.z.powf(1e6));
-        assert!((naive - exact).abs() > (got - exact).abs());
+    fn one(v: [f32; 3]) -> V3<f32, 1> {
+        V3::splat(v)
     }
 
     #[test]
     fn spot_edge_is_inside_and_cutoff_90_is_exact() {
         let light = Light {
+            position: [0.0, 0.0, 1.0, 1.0],
             spot_cutoff: 90.0,
             spot_direction: [0.0, 0.0, -1.0],
             ..Light::default()
         };
-        let p = prepare_light::<f32>(
-            &Light {
-                position: [0.0, 0.0, 1.0, 1.0],
-                ..light
-            },
-            0,
-            None,
-            true,
-        )
-        .unwrap();
+        let p = prepare_light::<f32>(&light, 0, None, true).unwrap();
         let Source::Positional {
             spot: Some(spot), ..
         } = p.source
@@ -399,13 +397,13 @@ mod tests {
         };
         assert_eq!(spot.cos_cutoff, 0.0);
         // Perpendicular to the axis: on the edge, inside, 0^0 = 1.
-        assert_eq!(spot.factor(Vec3::X), 1.0);
+        assert_eq!(spot_factor(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
         let sharp = Spot {
             exponent: 2.0,
             ..spot
         };
-        assert_eq!(sharp.factor(Vec3::X), 0.0);
-        assert_eq!(sharp.factor(-Vec3::Z), 1.0);
+        assert_eq!(spot_factor(&sharp, one([1.0, 0.0, 0.0])).0, [0.0]);
+        assert_eq!(spot_factor(&sharp, one([0.0, 0.0, -1.0])).0, [1.0]);
     }
 
     #[test]
@@ -424,17 +422,19 @@ mod tests {
             spot, 0.0,
             "the light shines along -z, the cone points along +z"
         );
-        assert_eq!(halfway, Some(DVec3::Z));
+        assert_eq!(halfway, Some([0.0, 0.0, 1.0]));
     }
 
     #[test]
     fn transform_uses_the_inverse_transpose() {
         let m = DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0));
         let t = Transform::<f64>::new(&m, false).unwrap();
-        assert_eq!(t.point(DVec3::ONE), DVec3::new(2.0, 1.0, 1.0));
-        assert_eq!(t.normal(DVec3::ONE), DVec3::new(0.5, 1.0, 1.0));
+        let ones = V3::<f64, 1>::splat([1.0; 3]);
+        assert_eq!(t.point(ones).lane(0), [2.0, 1.0, 1.0]);
+        assert_eq!(t.normal(ones).lane(0), [0.5, 1.0, 1.0]);
         let uniform = Transform::<f64>::new(&DMat4::from_scale(DVec3::splat(4.0)), true).unwrap();
-        assert_eq!(uniform.normal(DVec3::Z), DVec3::Z);
+        let z = V3::<f64, 1>::splat([0.0, 0.0, 1.0]);
+        assert_eq!(uniform.normal(z).lane(0), [0.0, 0.0, 1.0]);
         assert!(
             Transform::<f64>::new(&DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0)), false).is_err()
         );

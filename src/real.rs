@@ -3,9 +3,13 @@
 //!
 //! Also the scale-safe vector normalisation that the whole equation relies on: glam's
 //! `normalize` computes `sqrt(dot(v, v))`, which under- or overflows for |v| outside roughly
-//! [1e-19, 1e19] in f32; [`normalize_and_length`] prescales such vectors by an exact power of two.
+//! [1e-19, 1e19] in f32; [`normalize_and_length`] prescales such vectors by an exact power of two
+//! (it is the one-lane case of [`crate::lanes::normalize_and_length`]).
 
 use glam::{DVec3, Vec3};
+
+use crate::elementary::{exp_f32, exp_f64, ln_1p_f32, ln_1p_f64, ln_f32, ln_f64};
+use crate::lanes::{Pack, V3};
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 
@@ -96,6 +100,17 @@ pub trait Real:
     const UPSCALE: Self;
     /// The reciprocal of [`Real::UPSCALE`], for vectors whose squared length overflows.
     const DOWNSCALE: Self;
+    /// The magnitude at which the kernels saturate a light's weight (att·spot times n⊙VP or the
+    /// specular power) and the light sums: 2^64 in f32, 2^240 in f64. A weight times a colour
+    /// (below [`Real::COLOR_SATURATION`]) stays below 2^124 (f32) or 2^480 (f64), so sums of
+    /// them stay finite and no `inf · 0` or `inf − inf` can arise from finite input.
+    const SATURATION: Self;
+    /// The magnitude at which light and material colours saturate: 2^60 in f32, 2^240 in f64.
+    const COLOR_SATURATION: Self;
+    /// How many lights are summed in this type before the partial sum is added to an `f64`
+    /// total: 8 for `f32` (the sum's error stays 8 ulp of the largest term, whatever the light
+    /// count), unbounded for `f64`.
+    const SUM_BLOCK: usize;
     /// Rounds an `f64` to this type.
     #[must_use]
     fn from_f64(x: f64) -> Self;
@@ -105,12 +120,19 @@ pub trait Real:
     /// Square root.
     #[must_use]
     fn sqrt(self) -> Self;
-    /// `ln(1 + self)`, accurate near 0.
-    #[must_use]
-    fn ln_1p(self) -> Self;
-    /// `e^self`.
-    #[must_use]
-    fn exp(self) -> Self;
+    /// `ln(1 + x)` lane by lane for x > −1, accurate near 0 (see [`crate::elementary`]: within
+    /// 2 ulp in f32, 1 ulp in f64, the same bits on every CPU).
+    ///
+    /// Lane functions take whole arrays and call the scalar function in a plain loop: behind a
+    /// closure, LLVM may leave a body this large out of line and scalar.
+    fn ln_1p_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    /// `e^x` lane by lane (see [`crate::elementary`]: within 2 ulp in f32, 1 ulp in f64).
+    fn exp_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    /// `ln x` lane by lane for x ≥ 0 (see [`crate::elementary`]).
+    fn ln_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    /// Veltkamp's splitter 2^⌈p/2⌉ + 1 (4097 in f32, 2^27 + 1 in f64): `c = x·SPLIT`,
+    /// `hi = c − (c − x)` leaves half the significand in `hi`, so products of halves are exact.
+    const SPLIT: Self;
     /// The smaller of two numbers (the non-NaN one if one is NaN).
     #[must_use]
     fn min(self, other: Self) -> Self;
@@ -119,9 +141,6 @@ pub trait Real:
     fn max(self, other: Self) -> Self;
     /// True unless NaN or infinite.
     fn is_finite(self) -> bool;
-    /// `ln |v|` for a nonzero finite `v` of length `length` (as returned by
-    /// [`normalize_and_length`]), accurate to a few ulp of `Self` also when |v| ≈ 1.
-    fn ln_length(v: Self::Vec3, length: Self) -> Self;
 }
 
 macro_rules! impl_real_common {
@@ -129,14 +148,6 @@ macro_rules! impl_real_common {
         #[inline]
         fn sqrt(self) -> Self {
             self.sqrt()
-        }
-        #[inline]
-        fn ln_1p(self) -> Self {
-            self.ln_1p()
-        }
-        #[inline]
-        fn exp(self) -> Self {
-            self.exp()
         }
         #[inline]
         fn min(self, other: Self) -> Self {
@@ -165,6 +176,9 @@ impl Real for f32 {
     // 2^-149 · 2^100 = 2^-49 (its square is normal); 2^128 · 2^-100 = 2^28 (its square is finite).
     const UPSCALE: Self = f32::from_bits((127 + 100) << 23);
     const DOWNSCALE: Self = f32::from_bits((127 - 100) << 23);
+    const SATURATION: Self = f32::from_bits((127 + 64) << 23);
+    const COLOR_SATURATION: Self = f32::from_bits((127 + 60) << 23);
+    const SUM_BLOCK: usize = 8;
     #[inline]
     fn from_f64(x: f64) -> Self {
         x as f32
@@ -174,12 +188,28 @@ impl Real for f32 {
         f64::from(self)
     }
     impl_real_common!();
-    #[inline]
-    fn ln_length(v: Vec3, _length: f32) -> f32 {
-        // Squares of f32 are exact in f64, so |v|² − 1 keeps every bit that matters near |v| = 1.
-        let w = v.as_dvec3();
-        (0.5 * (w.dot(w) - 1.0).ln_1p()) as f32
+    #[inline(always)]
+    fn ln_1p_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
+        for v in &mut x {
+            *v = ln_1p_f32(*v);
+        }
+        x
     }
+    #[inline(always)]
+    fn exp_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
+        for v in &mut x {
+            *v = exp_f32(*v);
+        }
+        x
+    }
+    #[inline(always)]
+    fn ln_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
+        for v in &mut x {
+            *v = ln_f32(*v);
+        }
+        x
+    }
+    const SPLIT: f32 = 4097.0;
 }
 
 impl Real for f64 {
@@ -194,6 +224,9 @@ impl Real for f64 {
     // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).
     const UPSCALE: Self = f64::from_bits((1023 + 600) << 52);
     const DOWNSCALE: Self = f64::from_bits((1023 - 600) << 52);
+    const SATURATION: Self = f64::from_bits((1023 + 240) << 52);
+    const COLOR_SATURATION: Self = f64::from_bits((1023 + 240) << 52);
+    const SUM_BLOCK: usize = usize::MAX;
     #[inline]
     fn from_f64(x: f64) -> Self {
         x
@@ -203,10 +236,28 @@ impl Real for f64 {
         self
     }
     impl_real_common!();
-    #[inline]
-    fn ln_length(_v: DVec3, length: f64) -> f64 {
-        length.ln()
+    #[inline(always)]
+    fn ln_1p_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
+        for v in &mut x {
+            *v = ln_1p_f64(*v);
+        }
+        x
     }
+    #[inline(always)]
+    fn exp_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
+        for v in &mut x {
+            *v = exp_f64(*v);
+        }
+        x
+    }
+    #[inline(always)]
+    fn ln_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
+        for v in &mut x {
+            *v = ln_f64(*v);
+        }
+        x
+    }
+    const SPLIT: f64 = 134_217_729.0;
 }
 
 /// The unit vector in the direction of `v` and the length of `v`; `(0, 0)` for the zero vector.
@@ -216,29 +267,13 @@ impl Real for f64 {
 /// The length itself may round to infinity for |v| beyond the type's range.
 #[inline]
 pub fn normalize_and_length<T: Real>(v: T::Vec3) -> (T::Vec3, T) {
-    let len2 = v.dot(v);
-    if len2 >= T::MIN_POSITIVE && len2 <= T::MAX {
-        let len = len2.sqrt();
-        return (v / len, len);
-    }
-    normalize_rescaled(v, len2)
-}
-
-/// The rare branch of [`normalize_and_length`], kept out of line so the hot path stays small.
-#[cold]
-#[inline(never)]
-fn normalize_rescaled<T: Real>(v: T::Vec3, len2: T) -> (T::Vec3, T) {
-    if v == T::Vec3::ZERO {
-        return (T::Vec3::ZERO, T::ZERO);
-    }
-    let scale = if len2 < T::MIN_POSITIVE {
-        T::UPSCALE
-    } else {
-        T::DOWNSCALE
-    };
-    let w = v * scale;
-    let len = w.dot(w).sqrt();
-    (w / len, len / scale)
+    let [x, y, z] = v.to_array();
+    let (unit, length) = crate::lanes::normalize_and_length(V3::<T, 1> {
+        x: Pack([x]),
+        y: Pack([y]),
+        z: Pack([z]),
+    });
+    (T::Vec3::from_array(unit.lane(0)), length.0[0])
 }
 
 /// The unit vector in the direction of `v`, or zero for the zero vector (see
@@ -289,20 +324,5 @@ mod tests {
         assert!((len - 1e-320).abs() <= 1e-323);
         let (u, _) = normalize_and_length::<f64>(DVec3::new(1e300, 1e300, 0.0));
         assert!((u.x - std::f64::consts::FRAC_1_SQRT_2).abs() <= 2.0 * f64::EPSILON);
-    }
-
-    #[test]
-    fn ln_length_is_accurate_near_one() {
-        let v = Vec3::new(0.6, 0.8, 1e-4);
-        let exact = 0.5 * (0.36_f64 + 0.64 + 1e-8).ln();
-        let (_, len) = normalize_and_length::<f32>(v);
-        let got = f64::from(f32::ln_length(v, len));
-        let v64 = v.as_dvec3();
-        let exact_f32_input = 0.5 * v64.dot(v64).ln();
-        assert!(
-            (got - exact_f32_input).abs() < 1e-12,
-            "{got} vs {exact_f32_input}"
-        );
-        assert!((exact - exact_f32_input).abs() < 1e-7);
     }
 }

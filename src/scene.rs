@@ -121,6 +121,38 @@ impl Scene {
     }
 }
 
+impl Scene {
+    /// Checks GL's own limits on exponents, which glshade otherwise relaxes: shininess and spot
+    /// exponents in [0, 128] (GL generates `GL_INVALID_VALUE` beyond).
+    ///
+    /// # Errors
+    /// A value error naming the parameter, GL's range and the value found.
+    pub fn validate_gl_ranges(&self) -> Result<(), Error> {
+        const GL_MAX_EXPONENT: f64 = 128.0;
+        for (name, m) in [
+            ("material", &self.material),
+            ("back_material", &self.back_material),
+        ] {
+            if m.shininess > GL_MAX_EXPONENT {
+                return Err(Error::value(format!(
+                    "{name}.shininess must be in [0, 128] with strict=True (GL's range), got {}",
+                    m.shininess
+                )));
+            }
+        }
+        for (i, light) in self.lights.iter().enumerate() {
+            if light.spot_exponent > GL_MAX_EXPONENT {
+                return Err(Error::value(format!(
+                    "spot_exponent of light {i} must be in [0, 128] with strict=True (GL's \
+                     range), got {}",
+                    light.spot_exponent
+                )));
+            }
+        }
+        Ok(())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

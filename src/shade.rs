@@ -1,259 +1,115 @@
-//! The OpenGL 2.1 fixed-function lighting equation (§2.14.1, eqs. 2.2–2.5) per vertex, and the
-//! parallel loop over vertices.
+//! `shade`: the lighting equation over arrays of vertices, in parallel.
 //!
-//! ```text
-//! c_pri = e_cm + a_cm·a_cs + Σ_i att_i·spot_i·[a_cm·a_cli + (n⊙VP)·d_cm·d_cli + f_i·(n⊙ĥ)^s·s_cm·s_cli]
-//! ```
-//! The sum is regrouped by material factor (a_cm·Σ w_i a_cli + d_cm·Σ w_i (n⊙VP) d_cli + …), so
-//! a per-vertex colour material costs nothing per light, and the sums run in `f64` whatever the
-//! input type, so their error does not grow with the light count.
+//! The vertices are split into tasks of [`ROWS_PER_TASK`] rows spread over rayon's threads; each
+//! task runs the kernel ([`crate::kernel`]) block by block with the widest instruction set the
+//! CPU has ([`crate::dispatch`]). Every row is computed independently of every other, so the
+//! result does not depend on the number of threads or the instruction set.
 
-use glam::DVec3;
 use rayon::prelude::*;
 
+use crate::dispatch::{Isa, LaneWork, LANES};
 use crate::error::Error;
-use crate::material::Material;
-use crate::prepare::{
-    cos_pow, rgb, saturate, Prepared, PreparedLight, ShadeOptions, Source, Viewer, SATURATION,
-};
-use crate::real::{normalize_and_length, normalize_or_zero, Real, Vector3};
-use crate::scene::{Scene, Specular};
+use crate::kernel::{Block, Kernel};
+use crate::lanes::{build, Pack, V3};
+use crate::plan::Plan;
+use crate::prepare::{Accuracy, Prepared, ShadeOptions};
+use crate::real::Real;
+use crate::scene::Scene;
+
+pub use crate::kernel::VertexColors;
 
 /// Rows per parallel task: enough work to amortise rayon's scheduling for one light, few enough
 /// that a 10^4-row call still spreads over every core.
-const ROWS_PER_TASK: usize = 1024;
+const ROWS_PER_TASK: usize = 2048;
 
-/// Per-vertex colours for `GL_COLOR_MATERIAL`: `data` holds `width` (3 or 4) values per vertex,
-/// row after row; a missing alpha is 1.
-#[derive(Clone, Copy, Debug)]
-pub struct VertexColors<'a, T> {
-    /// The colours, C order.
-    pub data: &'a [T],
-    /// Values per vertex: 3 (RGB) or 4 (RGBA).
-    pub width: usize,
-}
-
-/// The normal as the equation needs it, for one side.
+/// The arrays of one call.
 #[derive(Clone, Copy)]
-struct SideNormal<T: Real> {
-    /// n as GL uses it (unit only with `normalize`), negated for the back side.
-    n: T::Vec3,
-    /// n̂, its direction.
-    unit: T::Vec3,
-    /// ln |n| (0 with `normalize`): (n·ĥ)^s = |n|^s (n̂·ĥ)^s.
-    ln_length: T,
+struct Inputs<'a, T> {
+    positions: &'a [[T; 3]],
+    normals: &'a [[T; 3]],
+    colors: Option<VertexColors<'a, T>>,
 }
 
-/// The light-weighted sums of one side: Σ w(n⊙VP)d_cli and Σ w·f·pow·s_cli.
-#[derive(Clone, Copy, Default)]
-struct SideSums {
-    diffuse: DVec3,
-    specular: DVec3,
+/// One task: rows `first..first + rows` of every output plane.
+struct Task<'a, 'b, T: Real> {
+    kernel: &'a Kernel<'a, T>,
+    inputs: Inputs<'a, T>,
+    first: usize,
+    planes: &'b mut [&'a mut [T]],
 }
 
-/// The colours of one vertex, in output order, RGBA in f64 after the clamp.
-type VertexOutput = [[f64; 4]; 4];
-
-#[inline]
-fn clamp_rgba(rgb: DVec3, alpha: f64) -> [f64; 4] {
-    let c = rgb.clamp(DVec3::ZERO, DVec3::ONE);
-    [c.x, c.y, c.z, alpha.clamp(0.0, 1.0)]
-}
-
-/// att_i of eq. 2.4; zero coefficients are skipped so an infinite distance gives 0, not NaN, and
-/// a zero denominator (the light at the vertex with k0 = 0) gives a large finite weight.
-#[inline]
-fn attenuation<T: Real>(k: [T; 3], d: T) -> T {
-    let mut den = k[0];
-    if k[1] != T::ZERO {
-        den += k[1] * d;
-    }
-    if k[2] != T::ZERO {
-        den += k[2] * d * d;
-    }
-    T::ONE / den.max(T::MIN_POSITIVE)
-}
-
-impl<T: Real> Prepared<T> {
-    /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i for the vertex at `p`.
-    #[inline]
-    fn light_at(light: &PreparedLight<T>, p: T::Vec3) -> (T::Vec3, T, T) {
-        match light.source {
-            Source::Directional { vp, spot, .. } => (vp, T::ONE, spot),
-            Source::Positional {
-                position,
-                attenuation: k,
-                spot,
-            } => {
-                let (vp, d) = normalize_and_length::<T>(position - p);
-                let spot = spot.map_or(T::ONE, |s| s.factor(-vp));
-                (vp, attenuation(k, d), spot)
-            }
-        }
-    }
-
-    /// (n⊙ĥ)^s (Blinn) or (R⊙VP_e)^s (Phong) for a front-lit side; 0 for a zero ĥ or a viewer
-    /// at the vertex.
-    #[inline]
-    fn specular_power(
-        &self,
-        light: &PreparedLight<T>,
-        side: &SideNormal<T>,
-        vp: T::Vec3,
-        view: T::Vec3,
-        n_dot_vp: T,
-        s: T,
-    ) -> T {
-        match self.specular {
-            Specular::Blinn => {
-                let h = match light.source {
-                    Source::Directional {
-                        halfway: Some(h), ..
-                    } => h,
-                    _ => normalize_or_zero::<T>(vp + view),
-                };
-                if h == T::Vec3::ZERO {
-                    return T::ZERO;
-                }
-                cos_pow(side.unit.dot(h), side.unit, h, s, side.ln_length)
-            }
-            Specular::Phong => {
-                if view == T::Vec3::ZERO {
-                    return T::ZERO;
-                }
-                let r = side.n * (n_dot_vp + n_dot_vp) - vp;
-                let (r_unit, r_length) = normalize_and_length::<T>(r);
-                if r_length == T::ZERO {
-                    return T::ZERO;
-                }
-                let ln_length = if self.normalize {
-                    T::ZERO
-                } else {
-                    T::ln_length(r, r_length)
-                };
-                cos_pow(r_unit.dot(view), r_unit, view, s, ln_length)
-            }
-        }
-    }
-
-    /// The material of `side` (0 front, 1 back) at a vertex of colour `color`.
-    #[inline]
-    fn material(&self, side: usize, color: Option<[f64; 4]>) -> Material {
-        let m = &self.materials[side];
-        match (self.color_material, color) {
-            (Some(cm), Some(c)) if cm.applies_to(side == 1) => cm.apply(m, c),
-            _ => *m,
-        }
-    }
-
-    /// Every colour of one vertex given in model coordinates, or `None` when its eye-space
-    /// position, normal or colour is not finite.
-    #[inline]
-    fn vertex(
-        &self,
-        position: [T; 3],
-        normal: [T; 3],
-        color: Option<[f64; 4]>,
-    ) -> Option<VertexOutput> {
-        let (mut p, mut n) = (T::Vec3::from_array(position), T::Vec3::from_array(normal));
-        if let Some(t) = &self.transform {
-            (p, n) = (t.point(p), t.normal(n));
-        }
-        if !(p.is_finite()
-            && n.is_finite()
-            && color.is_none_or(|c| c.iter().all(|x| x.is_finite())))
-        {
-            return None;
-        }
-        let (unit, length) = normalize_and_length::<T>(n);
-        let front = if self.normalize {
-            SideNormal {
-                n: unit,
-                unit,
-                ln_length: T::ZERO,
-            }
-        } else {
-            let ln_length = if length == T::ZERO {
-                T::ZERO
+impl<T: Real> Task<'_, '_, T> {
+    /// Loads the block of rows `rows[0..N]` (absolute row numbers).
+    #[inline(always)]
+    fn load<const N: usize>(&self, rows: [usize; N]) -> Block<T, N> {
+        let Inputs {
+            positions,
+            normals,
+            colors,
+        } = self.inputs;
+        let gather = |a: &[[T; 3]]| -> [[T; 3]; N] { build([T::ZERO; 3], |j| a[rows[j]]) };
+        Block {
+            positions: if self.kernel.plan.positions {
+                V3::load(&gather(positions))
             } else {
-                T::ln_length(n, length)
-            };
-            SideNormal { n, unit, ln_length }
-        };
-        let sides = [
-            front,
-            SideNormal {
-                n: -front.n,
-                unit: -front.unit,
-                ..front
+                V3::zero()
             },
-        ];
-        let view = match self.viewer {
-            Viewer::Infinite(v) => v,
-            Viewer::Local(e) => normalize_or_zero::<T>(e - p),
-        };
-        let mut ambient = DVec3::ZERO;
-        let mut sums = [SideSums::default(); 2];
-        for light in &self.lights {
-            let (vp, att, spot) = Self::light_at(light, p);
-            let w = (att.to_f64() * spot.to_f64()).min(SATURATION);
-            if w == 0.0 {
-                continue; // adds exactly nothing
-            }
-            ambient += light.ambient * w;
-            for (i, (side, sum)) in sides.iter().zip(&mut sums).enumerate().take(self.sides) {
-                let n_dot_vp = side.n.dot(vp);
-                // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
-                if n_dot_vp > T::ZERO {
-                    sum.diffuse += light.diffuse * (w * saturate(n_dot_vp.to_f64()));
-                    let power =
-                        self.specular_power(light, side, vp, view, n_dot_vp, self.shininess[i]);
-                    sum.specular += light.specular * (w * saturate(power.to_f64()));
-                }
-            }
+            normals: V3::load(&gather(normals)),
+            colors: colors.map(|c| {
+                let channel = |k: usize| {
+                    Pack(build(T::ONE, |j| {
+                        if k < c.width {
+                            c.data[rows[j] * c.width + k]
+                        } else {
+                            T::ONE
+                        }
+                    }))
+                };
+                [channel(0), channel(1), channel(2), channel(3)]
+            }),
         }
-
-        let mut out = [[0.0; 4]; 4];
-        let mut k = 0;
-        for (side, sum) in sums.iter().enumerate().take(self.sides) {
-            let m = self.material(side, color);
-            let a = rgb(m.ambient);
-            let lit = rgb(m.emission)
-                + a * self.global_ambient
-                + a * ambient
-                + rgb(m.diffuse) * sum.diffuse;
-            let specular = rgb(m.specular) * sum.specular;
-            if self.separate_specular {
-                out[k] = clamp_rgba(lit, m.diffuse[3]);
-                out[k + 1] = clamp_rgba(specular, 1.0);
-                k += 2;
-            } else {
-                out[k] = clamp_rgba(lit + specular, m.diffuse[3]);
-                k += 1;
-            }
-        }
-        Some(out)
     }
 }
 
-/// Lights `positions` with `normals` (both (n, 3), model coordinates) under `scene`, writing
-/// every colour the scene computes into `out`.
-///
-/// `out` holds `scene.output_count()` planes of n RGBA rows, one after the other, in the order
-/// of [`Scene::output_names`], each clamped to [0, 1]. A vertex whose eye-space position,
-/// normal or colour is not finite gets NaN in every plane; every other output is finite.
-/// Vertices are shaded in parallel; the result is identical for any number of threads.
-///
-/// # Errors
-/// A value error for an invalid scene or modelview, mismatched lengths, colours without
-/// `color_material` (or the reverse), or an `out` of the wrong length.
-pub fn shade<T: Real>(
+impl<T: Real> LaneWork for Task<'_, '_, T> {
+    #[inline(always)]
+    fn run<const N: usize>(self) {
+        let count = self.planes[0].len() / 4;
+        let mut start = 0;
+        while start < count {
+            let valid = N.min(count - start);
+            // A short last block repeats its first row in the missing lanes (finite, and
+            // never written back).
+            let rows = build(0, |j| self.first + start + if j < valid { j } else { 0 });
+            let block = self.load::<N>(rows);
+            let colours = if self.kernel.prepared.sides == 2 {
+                self.kernel.block::<N, 2>(&block)
+            } else {
+                self.kernel.block::<N, 1>(&block)
+            };
+            for (plane, rgba) in self.planes.iter_mut().zip(&colours) {
+                for (j, dst) in plane[4 * start..4 * (start + valid)]
+                    .chunks_exact_mut(4)
+                    .enumerate()
+                {
+                    for (d, c) in dst.iter_mut().zip(rgba) {
+                        *d = c.0[j];
+                    }
+                }
+            }
+            start += valid;
+        }
+    }
+}
+
+/// Checks the arguments of [`shade`] that do not depend on the scene.
+fn check_arrays<T: Real>(
     scene: &Scene,
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
     options: &ShadeOptions,
-    out: &mut [T],
+    out: &[T],
 ) -> Result<(), Error> {
     let n = positions.len();
     if normals.len() != n {
@@ -283,51 +139,149 @@ pub fn shade<T: Real>(
             out.len()
         )));
     }
-    let prepared = Prepared::<T>::new(scene, options)?;
-    if n == 0 {
+    Ok(())
+}
+
+/// Lights `positions` with `normals` (both (n, 3), model coordinates) under `scene`, writing
+/// every colour the scene computes into `out`.
+///
+/// `out` holds `scene.output_count()` planes of n RGBA rows, one after the other, in the order
+/// of [`Scene::output_names`], each clamped to [0, 1]. A vertex whose eye-space normal or colour
+/// is not finite, or whose position is not finite when the scene reads positions (a positional
+/// light or a local viewer), gets NaN in every plane; every other output is finite. Vertices
+/// are shaded in parallel; the result is identical for any number of threads and on any CPU.
+///
+/// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
+/// [`Accuracy::Exact`] in `f64` whatever `T` is.
+///
+/// # Errors
+/// A value error for an invalid scene or modelview, mismatched lengths, colours without
+/// `color_material` (or the reverse), or an `out` of the wrong length.
+pub fn shade<T: Real>(
+    scene: &Scene,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    options: &ShadeOptions,
+    out: &mut [T],
+) -> Result<(), Error> {
+    check_arrays(scene, positions, normals, colors, options, out)?;
+    let widen = options.accuracy == Accuracy::Exact && std::mem::size_of::<T>() < 8;
+    if !widen {
+        let prepared = Prepared::<T>::new(scene, options)?;
+        let plan = Plan::new(&prepared);
+        run(
+            &prepared,
+            &plan,
+            Isa::detect(),
+            positions,
+            normals,
+            colors,
+            out,
+        );
         return Ok(());
     }
+    let prepared = Prepared::<f64>::new(scene, options)?;
+    let plan = Plan::new(&prepared);
+    let wide =
+        |rows: &[[T; 3]]| -> Vec<[f64; 3]> { rows.iter().map(|r| r.map(T::to_f64)).collect() };
+    let data: Vec<f64> =
+        colors.map_or_else(Vec::new, |c| c.data.iter().map(|x| x.to_f64()).collect());
+    let colors = colors.map(|c| VertexColors {
+        data: &data[..],
+        width: c.width,
+    });
+    let mut result = vec![0.0; out.len()];
+    let positions = if plan.positions {
+        wide(positions)
+    } else {
+        vec![[0.0; 3]; positions.len()]
+    };
+    run(
+        &prepared,
+        &plan,
+        Isa::detect(),
+        &positions,
+        &wide(normals),
+        colors,
+        &mut result,
+    );
+    for (d, s) in out.iter_mut().zip(result) {
+        *d = T::from_f64(s);
+    }
+    Ok(())
+}
 
+/// Runs the kernel of `prepared` and `plan` over every row with instruction set `isa`.
+pub(crate) fn run<T: Real>(
+    prepared: &Prepared<T>,
+    plan: &Plan,
+    isa: Isa,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    out: &mut [T],
+) {
+    let n = normals.len();
+    if n == 0 {
+        return;
+    }
+    let kernel = Kernel { prepared, plan };
+    let inputs = Inputs {
+        positions,
+        normals,
+        colors,
+    };
     // Regroup the planes chunk by chunk, so each task owns the same rows of every plane.
-    let mut tasks: Vec<Vec<&mut [T]>> = (0..n.div_ceil(ROWS_PER_TASK))
-        .map(|_| Vec::with_capacity(planes))
-        .collect();
+    let mut tasks: Vec<Vec<&mut [T]>> =
+        (0..n.div_ceil(ROWS_PER_TASK)).map(|_| Vec::new()).collect();
     for plane in out.chunks_mut(n * 4) {
         for (task, rows) in tasks.iter_mut().zip(plane.chunks_mut(ROWS_PER_TASK * 4)) {
             task.push(rows);
         }
     }
-    tasks.into_par_iter().enumerate().for_each(|(t, mut task)| {
-        let first = t * ROWS_PER_TASK;
-        for j in 0..task[0].len() / 4 {
-            let i = first + j;
-            let color = colors.map(|c| {
-                let row = &c.data[i * c.width..(i + 1) * c.width];
-                let alpha = if c.width == 4 { row[3].to_f64() } else { 1.0 };
-                [row[0].to_f64(), row[1].to_f64(), row[2].to_f64(), alpha]
-            });
-            let rgba = prepared.vertex(positions[i], normals[i], color);
-            for (k, plane) in task.iter_mut().enumerate() {
-                let dst = &mut plane[4 * j..4 * j + 4];
-                match &rgba {
-                    Some(colours) => {
-                        for (d, &s) in dst.iter_mut().zip(&colours[k]) {
-                            *d = T::from_f64(s);
-                        }
-                    }
-                    None => dst.fill(T::NAN),
-                }
-            }
-        }
-    });
-    Ok(())
+    let work = |(t, mut planes): (usize, Vec<&mut [T]>)| {
+        let task = Task {
+            kernel: &kernel,
+            inputs,
+            first: t * ROWS_PER_TASK,
+            planes: &mut planes,
+        };
+        isa.run(task);
+    };
+    if tasks.len() == 1 {
+        tasks.into_iter().enumerate().for_each(work);
+    } else {
+        tasks.into_par_iter().enumerate().for_each(work);
+    }
+}
+
+/// The one-line description of what `shade` computes for `scene` and `options` in `T`: the
+/// arithmetic, the instruction set and the [`Plan`].
+///
+/// # Errors
+/// As [`shade`] for an invalid scene or options.
+pub fn describe<T: Real>(scene: &Scene, options: &ShadeOptions) -> Result<String, Error> {
+    let isa = Isa::detect();
+    let exact = options.accuracy == Accuracy::Exact;
+    let (bytes, plan) = if exact || std::mem::size_of::<T>() == 8 {
+        (8, Plan::new(&Prepared::<f64>::new(scene, options)?))
+    } else {
+        (4, Plan::new(&Prepared::<T>::new(scene, options)?))
+    };
+    let mode = if exact { "exact" } else { "fast" };
+    Ok(format!(
+        "{mode}: float{} arithmetic, {}, {LANES} vertices per block; {plan}",
+        bytes * 8,
+        isa.name(),
+    ))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::light::Light;
-    use crate::material::ColorMaterial;
+    use crate::material::{ColorMaterial, Material};
 
     fn shade_one<T: Real>(scene: &Scene, p: [T; 3], n: [T; 3], options: &ShadeOptions) -> Vec<T> {
         let mut out = vec![T::ZERO; scene.output_count() * 4];
@@ -432,23 +386,31 @@ mod tests {
         assert_eq!(out, vec![0.0, 1.0, 0.0, 1.0]);
     }
 
+    fn shade_rows(scene: &Scene, positions: &[[f32; 3]], normals: &[[f32; 3]]) -> Vec<f32> {
+        let mut out = vec![0.0_f32; positions.len() * 4];
+        let options = ShadeOptions::default();
+        shade(scene, positions, normals, None, &options, &mut out).unwrap();
+        out
+    }
+
     #[test]
     fn nan_stays_in_its_row() {
-        let scene = headlight_scene();
-        let positions = [[0.0_f32; 3], [f32::NAN, 0.0, 0.0], [0.0; 3]];
-        let normals = [[0.0, 0.0, 1.0]; 3];
-        let mut out = vec![0.0_f32; 12];
-        shade(
-            &scene,
-            &positions,
-            &normals,
-            None,
-            &ShadeOptions::default(),
-            &mut out,
-        )
-        .unwrap();
-        assert!(out[4..8].iter().all(|x| x.is_nan()));
-        assert!(out[..4].iter().chain(&out[8..]).all(|x| x.is_finite()));
+        let mut scene = headlight_scene();
+        let positions = [[0.0_f32; 3], [f32::NAN, 0.0, 0.0], [0.0; 3], [0.0; 3]];
+        let normals = [
+            [0.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0],
+            [f32::INFINITY, 0.0, 1.0],
+            [0.0; 3],
+        ];
+        let out = shade_rows(&scene, &positions, &normals);
+        // A directional light under an infinite viewer never reads positions.
+        assert!(out[..8].iter().chain(&out[12..]).all(|x| x.is_finite()));
+        assert!(out[8..12].iter().all(|x| x.is_nan()));
+        scene.viewer = [0.0, 0.0, 0.0, 1.0];
+        let out = shade_rows(&scene, &positions, &normals);
+        assert!(out[4..12].iter().all(|x| x.is_nan()));
+        assert!(out[..4].iter().chain(&out[12..]).all(|x| x.is_finite()));
     }
 
     #[test]

@@ -1,9 +1,10 @@
 """A float64 transcription of the OpenGL 2.1 lighting equation (section 2.14.1, eqs. 2.2-2.5).
 
 Written from the specification, term by term, as the test oracle: it shares no code with
-glshade. Where the spec says "undefined", it follows the conventions DESIGN.md pins (a zero
-halfway vector or a viewer at the vertex gives no specular; VP = 0 for a light at the vertex;
-cos(90 deg) is exactly 0). Lights and materials are plain dicts with GL's names.
+glshade. Where the spec says "undefined", it follows the conventions DESIGN.md pins (for a
+shininess above 0, a zero halfway or reflection vector or a viewer at the vertex gives no
+specular, while a shininess of 0 gives 0^0 = 1 whatever they are; VP = 0 for a light at the
+vertex; cos(90 deg) is exactly 0). Lights and materials are plain dicts with GL's names.
 """
 
 from __future__ import annotations
@@ -178,12 +179,16 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
                 h = VP + VPe  # eq. 2.3
                 h_hat = unit(h)
                 base = np.maximum(dot(n, h_hat), 0.0)
-                power = np.where(np.linalg.norm(h, axis=1) > 0, base**srm, 0.0)
+                # 0^0 = 1 whatever h; for s > 0 a zero h gives no specular.
+                power = np.where((np.linalg.norm(h, axis=1) > 0) | (srm == 0), base**srm, 0.0)
                 cos_theta = dot(n_hat, h_hat)
             else:
                 R = 2 * n_dot_vp[:, None] * n - VP
                 base = np.maximum(dot(R, VPe), 0.0)
-                power = np.where(np.linalg.norm(VPe, axis=1) > 0, base**srm, 0.0)
+                has_r = np.linalg.norm(R, axis=1) > 0
+                power = np.where(
+                    (np.linalg.norm(VPe, axis=1) > 0) & has_r | (srm == 0), base**srm, 0.0
+                )
                 cos_theta = dot(unit(R), VPe)
             w = (att * spot)[:, None]
             a_cli, d_cli, s_cli = (rgba(L[k])[:3] for k in ("ambient", "diffuse", "specular"))

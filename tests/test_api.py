@@ -263,7 +263,8 @@ def test_native_module_rejects_bad_arrays_without_crashing() -> None:
         SCENE.global_ambient,
         SCENE.viewer,
     ]
-    tail = [False, False, "blinn", None, False, False, None, None, "front_and_back", None]
+    tail = [False, False, "blinn", None, False, False, None, None, "front_and_back", "fast"]
+    tail += [False, None]
     with pytest.raises(TypeError, match="positions must be float32 or float64"):
         _glshade.shade(P.astype(np.int32), N, *args, *tail)
     with pytest.raises(TypeError, match="normals"):

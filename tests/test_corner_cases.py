@@ -368,14 +368,24 @@ def test_14b_light_at_the_vertex_gives_no_diffuse_and_finite_attenuation(dtype: 
 
 def test_14c_zero_halfway_vector_gives_no_specular(dtype: type) -> None:
     # Light along +z at the vertex's viewer-opposite side: VP + VPe = 0 for the local viewer.
-    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1), "shininess": 0})
+    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1), "shininess": 10})
     light = gs.Light(position=(0, 0, -5, 1))
     scene = gs.Scene(lights=[light], material=m, global_ambient=(0, 0, 0), viewer=(0, 0, 0, 1))
     close(shade1(scene, (0, 0, -1), (0, 0, -1), dtype), (0, 0, 0, 1), dtype)
 
 
+def test_14c_with_shininess_zero_the_power_is_one_whatever_the_halfway_vector(
+    dtype: type,
+) -> None:
+    # (n . h)^0 = 1 (section 2.1.1) needs no h: as Mesa's degenerate LIT, f_i alone decides.
+    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1), "shininess": 0})
+    light = gs.Light(position=(0, 0, -5, 1))
+    scene = gs.Scene(lights=[light], material=m, global_ambient=(0, 0, 0), viewer=(0, 0, 0, 1))
+    close(shade1(scene, (0, 0, -1), (0, 0, -1), dtype), (1, 1, 1, 1), dtype)
+
+
 def test_14d_viewer_at_the_vertex_gives_no_phong_specular(dtype: type) -> None:
-    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1)})
+    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1), "shininess": 5})
     scene = gs.Scene(
         lights=[gs.Light()],
         material=m,
@@ -425,7 +435,8 @@ def test_fractional_exponents_away_from_zero(dtype: type) -> None:
 
 
 def test_nan_rows_stay_nan_and_alone(dtype: type) -> None:
-    scene = lit_scene()
+    # The local viewer makes the scene read positions.
+    scene = gs.Scene(lights=[gs.Light(position=(0, 1, 1, 0))], viewer=(0, 0, 0, 1))
     p = np.zeros((4, 3), dtype)
     n = np.tile(np.array(UP, dtype), (4, 1))
     p[1, 0] = np.nan
@@ -434,6 +445,10 @@ def test_nan_rows_stay_nan_and_alone(dtype: type) -> None:
     assert np.isnan(out[1:3]).all()
     clean = gs.shade(p[[0]], n[[0]], scene)
     assert np.array_equal(out[0], clean[0]) and np.array_equal(out[3], clean[0])
+    # Directional lights under an infinite viewer never read positions: a NaN there is unseen.
+    scene = lit_scene()
+    out = gs.shade(p, n, scene)
+    assert np.isfinite(out[[0, 1, 3]]).all() and np.isnan(out[2]).all()
     colors = np.ones((4, 3), dtype)
     colors[3, 1] = np.nan
     out = gs.shade(

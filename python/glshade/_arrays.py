@@ -49,3 +49,25 @@ def indices(value: ArrayLike, name: str) -> NDArray[np.int64]:
     if a.dtype.kind == "u" and a.size and a.max() > np.iinfo(np.int64).max:
         raise IndexError(f"{name} holds index {a.max()}, beyond any vertex count")
     return np.ascontiguousarray(a, dtype=np.int64)
+
+
+def matrix4(value: ArrayLike, name: str) -> NDArray[np.float64]:
+    """A (4, 4) real matrix as C-contiguous float64."""
+    m = np.asarray(value)
+    if m.dtype.kind not in "fiu":
+        raise TypeError(f"{name} must be real numbers, got dtype {m.dtype}")
+    if m.shape != (4, 4):
+        raise ValueError(f"{name} must have shape (4, 4), got {m.shape}")
+    return np.ascontiguousarray(m, dtype=np.float64)
+
+
+def choice(value: object, name: str) -> str:
+    """`value` checked to be a string before the native module parses it."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+def optional_choice(value: object, name: str) -> str | None:
+    """`value` checked to be a string or None."""
+    return None if value is None else choice(value, name)

@@ -12,6 +12,7 @@ __all__ = [
     "check_lights",
     "check_material",
     "check_scene",
+    "describe",
     "face_normals",
     "output_names",
     "shade",
@@ -50,8 +51,28 @@ def shade(
     colors: NDArray[np.floating[Any]] | None,
     color_material: str | None,
     color_material_face: str,
+    accuracy: str,
+    strict: bool,
     out: NDArray[np.floating[Any]] | None,
 ) -> NDArray[np.floating[Any]]: ...
+def describe(
+    lights: NDArray[np.float64],
+    material: NDArray[np.float64],
+    back_material: NDArray[np.float64],
+    global_ambient: NDArray[np.float64],
+    viewer: NDArray[np.float64],
+    two_side: bool,
+    separate_specular: bool,
+    specular: str,
+    modelview: NDArray[np.float64] | None,
+    normalize: bool,
+    rescale_normal: bool,
+    color_material: str | None,
+    color_material_face: str,
+    accuracy: str,
+    strict: bool,
+    dtype: str,
+) -> str: ...
 def face_normals(
     vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64]
 ) -> NDArray[np.floating[Any]]: ...

@@ -14,6 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import _glshade
+from ._arrays import choice, matrix4, optional_choice
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
 
@@ -448,6 +449,55 @@ class Scene:
     @property
     def outputs(self) -> tuple[str, ...]:
         return tuple(_glshade.output_names(self.two_side, self.separate_specular))
+
+    def plan(
+        self,
+        dtype: Any = np.float32,
+        *,
+        modelview: ArrayLike | None = None,
+        normalize: bool = False,
+        rescale_normal: bool = False,
+        color_material: str | None = None,
+        color_material_face: str = "front_and_back",
+        accuracy: Literal["fast", "exact"] = "fast",
+        strict: bool = False,
+    ) -> str:
+        """What `shade` computes for this scene, in one line.
+
+        The keywords are those of `shade` (``color_material`` stands for the presence of
+        per-vertex colours). The line names the arithmetic and instruction set, whether
+        positions are read at all, and for each light which terms are evaluated: a term the
+        scene does not need (a zero colour, shininess 0, no attenuation, no spot cone, a
+        directional light's constant direction and halfway vector) is left out, with the same
+        results bit for bit.
+
+        Examples
+        --------
+        >>> import glshade as gs
+        >>> print(gs.Scene(lights=[gs.Light()]).plan())  # doctest: +ELLIPSIS
+        fast: float32 arithmetic, ...; reads normals only; light 0 directional (VP, ĥ constant): diffuse
+        """
+        name = np.dtype(dtype).name
+        if name not in ("float16", "float32", "float64"):
+            raise TypeError(f"dtype must be float32 or float64, got {name}")
+        return _glshade.describe(
+            self._lights.table,
+            self.material.row,
+            self.back_material.row,
+            self._global_ambient,
+            self._viewer,
+            self.two_side,
+            self.separate_specular,
+            self.specular,
+            None if modelview is None else matrix4(modelview, "modelview"),
+            bool(normalize),
+            bool(rescale_normal),
+            optional_choice(color_material, "color_material"),
+            choice(color_material_face, "color_material_face"),
+            choice(accuracy, "accuracy"),
+            bool(strict),
+            "float64" if name == "float64" else "float32",
+        )
 
     def __repr__(self) -> str:
         f = Light._format

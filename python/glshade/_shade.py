@@ -8,12 +8,13 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, float_dtype, rows
+from ._arrays import FloatArray, choice, float_dtype, matrix4, optional_choice, rows
 from ._scene import Scene
 
 __all__ = ["shade"]
 
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
+Accuracy = Literal["fast", "exact"]
 
 
 def shade(
@@ -27,6 +28,8 @@ def shade(
     colors: ArrayLike | None = None,
     color_material: ColorMaterialMode | None = None,
     color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    accuracy: Accuracy = "fast",
+    strict: bool = False,
     out: FloatArray | None = None,
 ) -> FloatArray:
     """Light vertices with OpenGL's fixed-function lighting equation (GL 2.1 section 2.14.1).
@@ -54,6 +57,12 @@ def shade(
         when `colors` is given.
     color_material_face : {"front", "back", "front_and_back"}
         The material(s) the colours replace (GL's default: both).
+    accuracy : {"fast", "exact"}
+        ``"fast"`` (default) computes in the input's precision; ``"exact"`` computes in float64
+        whatever the input and rounds the result once to its dtype. The README states the error
+        bound of each.
+    strict : bool
+        Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
     out : ndarray, optional
         A C-contiguous array of the result's shape and dtype to write into.
 
@@ -96,22 +105,9 @@ def shade(
     if colors is not None:
         c = rows(colors, "colors", dtype, width="3 or 4")
         color_material = color_material or "ambient_and_diffuse"
-    m = None
-    if modelview is not None:
-        m = np.asarray(modelview)
-        if m.dtype.kind not in "fiu":
-            raise TypeError(f"modelview must be real numbers, got dtype {m.dtype}")
-        if m.shape != (4, 4):
-            raise ValueError(f"modelview must have shape (4, 4), got {m.shape}")
-        m = np.ascontiguousarray(m, dtype=np.float64)
+    m = None if modelview is None else matrix4(modelview, "modelview")
     if out is not None and not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out)!r}")
-    for name, value in (
-        ("color_material", color_material),
-        ("color_material_face", color_material_face),
-    ):
-        if value is not None and not isinstance(value, str):
-            raise TypeError(f"{name} must be a string, got {value!r}")
     result: FloatArray = _glshade.shade(
         p,
         n,
@@ -127,8 +123,10 @@ def shade(
         bool(normalize),
         bool(rescale_normal),
         c,
-        color_material,
-        color_material_face,
+        optional_choice(color_material, "color_material"),
+        choice(color_material_face, "color_material_face"),
+        choice(accuracy, "accuracy"),
+        bool(strict),
         out,
     )
     return result

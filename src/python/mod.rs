@@ -168,7 +168,7 @@ mod _glshade {
     #[pymodule_export]
     use super::normals::{face_normals, vertex_normals};
     #[pymodule_export]
-    use super::shading::shade;
+    use super::shading::{describe, shade};
     #[pymodule_export]
     use super::{check_lights, check_material, check_scene, output_names};
 

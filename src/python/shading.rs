@@ -9,7 +9,7 @@ use pyo3::prelude::*;
 
 use super::{float_of, rows, scene_from, to_pyerr, Float};
 use crate::material::ColorMaterial;
-use crate::prepare::ShadeOptions;
+use crate::prepare::{Accuracy, ShadeOptions};
 use crate::real::Real;
 use crate::scene::Scene;
 use crate::shade::VertexColors;
@@ -100,13 +100,50 @@ fn shade_typed<'py, T: Element + Real>(
     Ok(array.clone().into_any())
 }
 
+/// The options of a `shade` call from the binding's arguments.
+fn options_from(
+    modelview: Option<&PyReadonlyArray2<'_, f64>>,
+    normalize: bool,
+    rescale_normal: bool,
+    color_material: Option<&str>,
+    color_material_face: &str,
+    accuracy: &str,
+    strict: bool,
+) -> PyResult<ShadeOptions> {
+    let modelview = match modelview {
+        Some(m) => {
+            let r = rows::<f64, 4>(m, "modelview")?;
+            if r.len() != 4 {
+                return Err(PyValueError::new_err(format!(
+                    "modelview must have shape (4, 4), got {:?}",
+                    m.shape()
+                )));
+            }
+            Some(glam::DMat4::from_cols_array_2d(&[r[0], r[1], r[2], r[3]]).transpose())
+        }
+        None => None,
+    };
+    let color_material = color_material
+        .map(|mode| ColorMaterial::parse(mode, color_material_face))
+        .transpose()
+        .map_err(to_pyerr)?;
+    Ok(ShadeOptions {
+        modelview,
+        normalize,
+        rescale_normal,
+        color_material,
+        accuracy: Accuracy::parse(accuracy).map_err(to_pyerr)?,
+        strict,
+    })
+}
+
 /// Lights the vertices; see `glshade.shade` for the arguments, which arrive here already
 /// coerced (C-contiguous float32 or float64 arrays, light and material tables as float64).
 #[pyfunction]
 #[pyo3(signature = (
     positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
     separate_specular, specular, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face, out
+    color_material_face, accuracy, strict, out
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
@@ -126,25 +163,19 @@ pub fn shade<'py>(
     colors: Option<&Bound<'py, PyUntypedArray>>,
     color_material: Option<&str>,
     color_material_face: &str,
+    accuracy: &str,
+    strict: bool,
     out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let modelview = match &modelview {
-        Some(m) => {
-            let r = rows::<f64, 4>(m, "modelview")?;
-            if r.len() != 4 {
-                return Err(PyValueError::new_err(format!(
-                    "modelview must have shape (4, 4), got {:?}",
-                    m.shape()
-                )));
-            }
-            Some(glam::DMat4::from_cols_array_2d(&[r[0], r[1], r[2], r[3]]).transpose())
-        }
-        None => None,
-    };
-    let color_material = color_material
-        .map(|mode| ColorMaterial::parse(mode, color_material_face))
-        .transpose()
-        .map_err(to_pyerr)?;
+    let options = options_from(
+        modelview.as_ref(),
+        normalize,
+        rescale_normal,
+        color_material,
+        color_material_face,
+        accuracy,
+        strict,
+    )?;
     let scene = scene_from(
         &lights,
         &material,
@@ -155,17 +186,66 @@ pub fn shade<'py>(
         separate_specular,
         specular,
     )?;
-    let call = Call {
-        scene,
-        options: ShadeOptions {
-            modelview,
-            normalize,
-            rescale_normal,
-            color_material,
-        },
-    };
+    let call = Call { scene, options };
     match float_of(py, positions, "positions")? {
         Float::F32 => shade_typed::<f32>(py, &call, positions, normals, colors, out),
         Float::F64 => shade_typed::<f64>(py, &call, positions, normals, colors, out),
     }
+}
+
+/// One line saying what `shade` computes for this scene and these options in `dtype`
+/// ("float32" or "float64"); see `glshade.Scene.plan`.
+#[pyfunction]
+#[pyo3(signature = (
+    lights, material, back_material, global_ambient, viewer, two_side, separate_specular,
+    specular, modelview, normalize, rescale_normal, color_material, color_material_face,
+    accuracy, strict, dtype
+))]
+pub fn describe(
+    lights: PyReadonlyArray2<'_, f64>,
+    material: PyReadonlyArray1<'_, f64>,
+    back_material: PyReadonlyArray1<'_, f64>,
+    global_ambient: PyReadonlyArray1<'_, f64>,
+    viewer: PyReadonlyArray1<'_, f64>,
+    two_side: bool,
+    separate_specular: bool,
+    specular: &str,
+    modelview: Option<PyReadonlyArray2<'_, f64>>,
+    normalize: bool,
+    rescale_normal: bool,
+    color_material: Option<&str>,
+    color_material_face: &str,
+    accuracy: &str,
+    strict: bool,
+    dtype: &str,
+) -> PyResult<String> {
+    let options = options_from(
+        modelview.as_ref(),
+        normalize,
+        rescale_normal,
+        color_material,
+        color_material_face,
+        accuracy,
+        strict,
+    )?;
+    let scene = scene_from(
+        &lights,
+        &material,
+        &back_material,
+        &global_ambient,
+        &viewer,
+        two_side,
+        separate_specular,
+        specular,
+    )?;
+    match dtype {
+        "float32" => crate::shade::describe::<f32>(&scene, &options),
+        "float64" => crate::shade::describe::<f64>(&scene, &options),
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "dtype must be 'float32' or 'float64', got '{dtype}'"
+            )))
+        }
+    }
+    .map_err(to_pyerr)
 }

@@ -1,0 +1,212 @@
+//! What a scene needs computed, decided once per call, like the state key of Mesa's
+//! fixed-function vertex program (`ffvertex_prog.c`, notes/gl_semantics.md §2.1).
+//!
+//! The kernel tests these flags once per block of vertices (uniform branches), so a term a
+//! scene does not need costs one predictable branch per block and nothing per vertex. Leaving
+//! a term out never changes a result: [`Plan::general`] computes every term for every light
+//! and must give the same bits (a test checks every feature subset).
+
+use std::fmt;
+
+use crate::material::ColorMaterialMode;
+use crate::prepare::{Prepared, Source, Viewer};
+use crate::real::Real;
+use crate::scene::Specular;
+
+/// The terms one light contributes.
+#[allow(clippy::struct_excessive_bools)] // one flag per term, like Mesa's state key
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct LightPlan {
+    /// a_cli ≠ 0: the ambient term.
+    pub ambient: bool,
+    /// d_cli ≠ 0: the diffuse term.
+    pub diffuse: bool,
+    /// s_cli ≠ 0 and some side has a specular material: the specular term.
+    pub specular: bool,
+    /// A positional light with (k0, k1, k2) ≠ (1, 0, 0): the attenuation quotient.
+    pub attenuated: bool,
+    /// What the light is (not a choice of the plan: eq. 2.4 and 2.5 decide it).
+    pub kind: LightKind,
+}
+
+/// How a light's direction and weight are obtained.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LightKind {
+    /// VP and the spot factor are per-light constants; so is ĥ under an infinite viewer.
+    Directional {
+        /// ĥ is a per-light constant.
+        constant_halfway: bool,
+    },
+    /// VP and the distance per vertex.
+    Positional {
+        /// The spot cone is evaluated per vertex.
+        spot: bool,
+    },
+}
+
+/// The terms one side (front or back) needs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SidePlan {
+    /// s_cm ≠ 0 or tracked by the vertex colour: the side has a specular term at all.
+    pub specular: bool,
+    /// s_rm ≠ 0: the specular power needs ĥ (or R) and `exp`/`ln`; at 0 it is 0⁰ = 1.
+    pub power: bool,
+}
+
+/// Which parts of the lighting equation a call evaluates.
+#[allow(clippy::struct_excessive_bools)]
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Plan {
+    /// One entry per light, in summation order.
+    pub lights: Vec<LightPlan>,
+    /// Front, then back (the back is used with two-sided lighting only).
+    pub sides: [SidePlan; 2],
+    /// Positions are read: some light is positional or the viewer is local.
+    pub positions: bool,
+    /// The unit normal n̂ is computed (`normalize`, or a specular power that needs it).
+    pub unit_normal: bool,
+    /// ln |n| is computed: a Blinn power on normals that are not normalised, (n·ĥ)^s = |n|^s (n̂·ĥ)^s.
+    pub normal_length: bool,
+    /// The vertex-to-eye direction VP_e is computed per vertex (local viewer and a specular term).
+    pub view: bool,
+}
+
+impl Plan {
+    /// The least a call with `prepared` must compute.
+    pub fn new<T: Real>(prepared: &Prepared<T>) -> Self {
+        let sides_used = prepared.sides;
+        let tracked = |mode: fn(ColorMaterialMode) -> bool, side: usize| {
+            prepared
+                .color_material
+                .is_some_and(|cm| cm.applies_to(side == 1) && mode(cm.mode))
+        };
+        let sides: [SidePlan; 2] = std::array::from_fn(|side| {
+            let m = &prepared.materials[side];
+            let specular = side < sides_used
+                && (nonzero(&m.specular[..3])
+                    || tracked(|mode| mode == ColorMaterialMode::Specular, side));
+            SidePlan {
+                specular,
+                power: specular && m.shininess != T::ZERO,
+            }
+        });
+        let any_specular = sides.iter().any(|s| s.specular);
+        let lights: Vec<LightPlan> = prepared
+            .lights
+            .iter()
+            .map(|light| LightPlan {
+                ambient: nonzero(&light.ambient),
+                diffuse: nonzero(&light.diffuse),
+                specular: any_specular && nonzero(&light.specular),
+                attenuated: match light.source {
+                    Source::Positional { attenuation, .. } => {
+                        attenuation != [T::ONE, T::ZERO, T::ZERO]
+                    }
+                    Source::Directional { .. } => false,
+                },
+                kind: match light.source {
+                    Source::Directional { halfway, .. } => LightKind::Directional {
+                        constant_halfway: halfway.is_some(),
+                    },
+                    Source::Positional { spot, .. } => LightKind::Positional {
+                        spot: spot.is_some(),
+                    },
+                },
+            })
+            .collect();
+        let lit_specular = |light: &LightPlan| light.specular;
+        let power = sides.iter().any(|s| s.power) && lights.iter().any(lit_specular);
+        let positional = prepared
+            .lights
+            .iter()
+            .any(|l| matches!(l.source, Source::Positional { .. }));
+        let local = matches!(prepared.viewer, Viewer::Local(_));
+        Self {
+            positions: positional || local,
+            unit_normal: prepared.normalize || power,
+            normal_length: !prepared.normalize && power && prepared.specular == Specular::Blinn,
+            view: local && power,
+            lights,
+            sides,
+        }
+    }
+
+    /// Every term of every light, whether the scene needs it or not: the reference the
+    /// specialised plans are checked against, bit for bit.
+    pub fn general<T: Real>(prepared: &Prepared<T>) -> Self {
+        let lean = Self::new(prepared);
+        let all = |light: &LightPlan| LightPlan {
+            ambient: true,
+            diffuse: true,
+            specular: true,
+            attenuated: matches!(light.kind, LightKind::Positional { .. }),
+            kind: light.kind,
+        };
+        let side = SidePlan {
+            specular: true,
+            power: true,
+        };
+        Self {
+            lights: lean.lights.iter().map(all).collect(),
+            sides: [side; 2],
+            // What is read is not a choice of the plan: a NaN in an unread position must not
+            // change the output (see `shade`), so the general plan reads the same arrays.
+            positions: lean.positions,
+            unit_normal: true,
+            normal_length: !prepared.normalize,
+            view: matches!(prepared.viewer, Viewer::Local(_)),
+        }
+    }
+}
+
+fn nonzero<T: Real>(c: &[T]) -> bool {
+    c.iter().any(|&x| x != T::ZERO)
+}
+
+impl fmt::Display for Plan {
+    /// One line: what is read and which terms each light computes.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let reads = if self.positions {
+            "positions and normals"
+        } else {
+            "normals only"
+        };
+        write!(f, "reads {reads}")?;
+        if self.unit_normal {
+            f.write_str("; n̂")?;
+            if self.normal_length {
+                f.write_str(" and ln|n|")?;
+            }
+        }
+        if self.view {
+            f.write_str("; VP_e per vertex")?;
+        }
+        for (i, light) in self.lights.iter().enumerate() {
+            let kind = match light.kind {
+                LightKind::Directional {
+                    constant_halfway: true,
+                } => "directional (VP, ĥ constant)",
+                LightKind::Directional { .. } => "directional (VP constant)",
+                LightKind::Positional { spot: true } => "positional spot",
+                LightKind::Positional { spot: false } => "positional",
+            };
+            let terms: Vec<&str> = [
+                (light.ambient, "ambient"),
+                (light.diffuse, "diffuse"),
+                (light.specular, "specular"),
+                (light.attenuated, "attenuation"),
+            ]
+            .iter()
+            .filter(|(on, _)| *on)
+            .map(|(_, name)| *name)
+            .collect();
+            let terms = if terms.is_empty() {
+                "nothing".to_owned()
+            } else {
+                terms.join("+")
+            };
+            write!(f, "; light {i} {kind}: {terms}")?;
+        }
+        Ok(())
+    }
+}
