@@ -475,7 +475,7 @@ class Scene:
         --------
         >>> import glshade as gs
         >>> print(gs.Scene(lights=[gs.Light()]).plan())  # doctest: +ELLIPSIS
-        fast: float32 arithmetic, ...; reads normals only; light 0 directional (VP, ĥ constant): diffuse
+        fast: float32 arithmetic, ...; light 0 directional (VP, ĥ constant): diffuse
         """
         name = np.dtype(dtype).name
         if name not in ("float16", "float32", "float64"):
