@@ -276,7 +276,9 @@ class UniformValue(NamedTuple):
 
 
 def max_lights_for(scene: gs.Scene) -> int:
-    """The FF_MAX_LIGHTS a shader needs for `scene`: its light count rounded up to 8."""
+    """The FF_MAX_LIGHTS a shader needs for `scene`: its light count rounded up to 8. The
+    light arrays are uniforms, about 36 components per light: llvmpipe's 16384 components per
+    stage hold some 400 lights."""
     return max(8, -(-len(scene.lights) // 8) * 8)
 
 
