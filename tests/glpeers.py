@@ -492,6 +492,35 @@ def float32_tolerance(
     return Float32Tolerance(bound, comparable, reference)
 
 
+def assert_agree(
+    tolerance: Float32Tolerance,
+    ours: np.ndarray,
+    theirs: np.ndarray,
+    compared: np.ndarray,
+    peer: str,
+    context: object = "",
+) -> int:
+    """Fails the test at the worst of the `compared` rows where glshade's colours `ours` and a
+    peer's `theirs` ((n, 4) or (k, n, 4) alike) differ by more than ``tolerance.bound`` in any
+    channel of any output; returns the number of rows compared."""
+    n = len(compared)
+    a, b = ours.reshape(-1, n, 4).astype(np.float64), theirs.reshape(-1, n, 4)
+    assert a.shape == b.shape, (a.shape, b.shape)
+    assert np.isfinite(b[:, compared]).all(), f"{peer} gave a colour for every compared row"
+    err = np.abs(a - b).max(axis=(0, 2))
+    bad = np.flatnonzero(compared & (err > tolerance.bound))
+    if bad.size:
+        i = bad[np.argmax(err[bad] / tolerance.bound[bad])]
+        spec = [out[i] for out in tolerance.reference.outputs]
+        import pytest
+
+        pytest.fail(
+            f"row {i}: |glshade - {peer}| = {err[i]:.3g} > {tolerance.bound[i]:.3g}\n"
+            f"glshade {a[:, i]}\n{peer:7} {b[:, i]}\nspec    {spec}\n{context}"
+        )
+    return int(compared.sum())
+
+
 # ---------------------------------------------------------------------------------------------
 # Per vertex: the compute shader
 
