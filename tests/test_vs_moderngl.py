@@ -53,22 +53,10 @@ def check(
     theirs: np.ndarray,
     what: str,
 ) -> int:
-    """Asserts |glshade - GLSL| within the float32 tolerance on the comparable rows of every
-    output ((n, 4) or (k, n, 4)); returns the number of rows compared."""
+    """Asserts glshade and the GLSL port agree within the float32 tolerance on the comparable
+    rows of every output ((n, 4) or (k, n, 4)); returns the number of rows compared."""
     tolerance = glpeers.float32_tolerance(ref, positions, normals, TOL, MARGIN)
-    n = len(positions)
-    ours, port = got.reshape(-1, n, 4), theirs.reshape(-1, n, 4)
-    assert np.isfinite(port[:, tolerance.comparable]).all()
-    err = np.abs(ours.astype(np.float64) - port).max(axis=(0, 2))
-    bad = np.flatnonzero(tolerance.comparable & (err > tolerance.bound))
-    if bad.size:
-        i = bad[np.argmax(err[bad] / tolerance.bound[bad])]
-        pytest.fail(
-            f"{what}, row {i}: |glshade - GLSL| = {err[i]:.3g} > {tolerance.bound[i]:.3g}\n"
-            f"glshade {ours[:, i]}\nGLSL    {port[:, i]}\n"
-            f"spec    {[out[i] for out in tolerance.reference.outputs]}\n{ref}"
-        )
-    return int(tolerance.comparable.sum())
+    return glpeers.assert_agree(tolerance, got, theirs, tolerance.comparable, "GLSL", (what, ref))
 
 
 # --- (a) per vertex ---------------------------------------------------------------------------

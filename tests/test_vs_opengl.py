@@ -445,20 +445,8 @@ def check(case: GLCase, got: np.ndarray, mesa: list[np.ndarray]) -> int:
     output; returns the number of vertex-output pairs compared."""
     tolerance = glpeers.float32_tolerance(case.ref, case.positions, case.normals, TOL, MARGIN)
     compared = tolerance.comparable & ~np.logical_or.reduce(list(mesa_departures(case).values()))
-    outputs = [got] if got.ndim == 2 else list(got)
-    assert len(outputs) == len(mesa)
-    for k, (ours, theirs) in enumerate(zip(outputs, mesa, strict=True)):
-        assert np.isfinite(theirs[compared]).all(), "Mesa returned a colour for every vertex"
-        err = np.abs(ours.astype(np.float64) - theirs).max(axis=1)
-        bad = np.flatnonzero(compared & (err > tolerance.bound))
-        if bad.size:
-            i = bad[np.argmax(err[bad] / tolerance.bound[bad])]
-            pytest.fail(
-                f"output {case.scene.outputs[k]!r}, vertex {i}: |glshade - Mesa| = "
-                f"{err[i]:.3g} > {tolerance.bound[i]:.3g}\nglshade {ours[i]}\nMesa    "
-                f"{theirs[i]}\nspec    {tolerance.reference.outputs[k][i]}\n{case.ref}"
-            )
-    return int(compared.sum()) * len(outputs)
+    rows = glpeers.assert_agree(tolerance, got, np.stack(mesa), compared, "Mesa", case.ref)
+    return rows * len(mesa)
 
 
 @pytest.mark.parametrize("name", list(COMBOS))
