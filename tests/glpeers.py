@@ -60,8 +60,10 @@ SHADING_MODES = {"phong": 0, "gouraud": 1, "flat": 2}
 _failures: dict[str, str] = {}
 
 
-def _once(what: str, make: Any) -> Any:
-    """make(), remembering a failure so that every later test reports it without retrying."""
+def gl_resource(what: str, make: Any) -> Any:
+    """make() (a context, a renderer): on any error the calling test fails under CI=true and
+    is skipped elsewhere, naming `what`; a failure is remembered, so later tests report it
+    without retrying."""
     if what in _failures:
         unavailable(_failures[what])
     try:
@@ -84,7 +86,7 @@ def _moderngl() -> Any:
 
 def moderngl_context() -> Any:
     """The session's standalone EGL moderngl context (GL >= 4.3 core, llvmpipe), made current."""
-    ctx = _once("moderngl EGL context (require=430)", _moderngl)
+    ctx = gl_resource("moderngl EGL context (require=430)", _moderngl)
     ctx.__enter__()  # make it current: another context (pyrender, PyOpenGL) may have been
     return ctx
 
@@ -173,7 +175,7 @@ def _compat() -> CompatContext:
 
 def compat_context() -> CompatContext:
     """The session's EGL compatibility-profile context (fixed-function GL), made current."""
-    compat: CompatContext = _once("EGL OpenGL compatibility-profile context", _compat)
+    compat: CompatContext = gl_resource("EGL OpenGL compatibility-profile context", _compat)
     compat.make_current()
     return compat
 
@@ -403,7 +405,7 @@ def set_uniforms_gl(program: int, uniforms: dict[str, UniformValue]) -> None:
             setters[u.glsl_type](location, count, value)
 
 
-def glsl_source(version: int, *parts: str, max_lights: int = 8, **defines: int) -> str:
+def glsl_source(version: int | str, *parts: str, max_lights: int = 8, **defines: int) -> str:
     """``#version``, FF_MAX_LIGHTS and `defines`, ``ff_lighting.glsl``, then `parts` (file names
     under ``glsl/``)."""
     head = [f"#version {version}", f"#define FF_MAX_LIGHTS {max_lights}"]
