@@ -204,8 +204,13 @@ impl<T: Real> Prepared<T> {
             for (i, (side, sum)) in sides.iter().zip(&mut sums).enumerate().take(self.sides) {
                 let n_dot_vp = side.n.dot(vp);
                 // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
-                if n_dot_vp > T::ZERO {
-                    sum.diffuse += light.diffuse * (w * saturate(n_dot_vp.to_f64()));
+                // specular_gate = false (learnopengl) drops f_i from the specular only; a zero
+                // normal or a light at the vertex (VP = 0) still gets none.
+                let lit = n_dot_vp > T::ZERO;
+                if lit || (!self.specular_gate && side.n != T::Vec3::ZERO && vp != T::Vec3::ZERO) {
+                    if lit {
+                        sum.diffuse += light.diffuse * (w * saturate(n_dot_vp.to_f64()));
+                    }
                     let power =
                         self.specular_power(light, side, vp, view, n_dot_vp, self.shininess[i]);
                     sum.specular += light.specular * (w * saturate(power.to_f64()));

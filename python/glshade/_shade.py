@@ -123,6 +123,7 @@ def shade(
         scene.two_side,
         scene.separate_specular,
         scene.specular,
+        scene.specular_gate,
         m,
         bool(normalize),
         bool(rescale_normal),

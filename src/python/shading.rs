@@ -105,8 +105,8 @@ fn shade_typed<'py, T: Element + Real>(
 #[pyfunction]
 #[pyo3(signature = (
     positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
-    separate_specular, specular, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face, out
+    separate_specular, specular, specular_gate, modelview, normalize, rescale_normal, colors,
+    color_material, color_material_face, out
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
@@ -120,6 +120,7 @@ pub fn shade<'py>(
     two_side: bool,
     separate_specular: bool,
     specular: &str,
+    specular_gate: bool,
     modelview: Option<PyReadonlyArray2<'py, f64>>,
     normalize: bool,
     rescale_normal: bool,
@@ -154,6 +155,7 @@ pub fn shade<'py>(
         two_side,
         separate_specular,
         specular,
+        specular_gate,
     )?;
     let call = Call {
         scene,
