@@ -416,10 +416,12 @@ impl<T: Real> Kernel<'_, T> {
                     } else {
                         Pack::splat(T::ONE)
                     };
+                    // Without the gate (learnopengl) a zero normal or a light at the vertex still
+                    // has no direction, so no specular.
                     let gate = if prepared.specular_gate {
                         lit
                     } else {
-                        Mask::splat(true)
+                        !(side.n.is_zero() | vp.is_zero())
                     };
                     let weight = weight(w, power).or_zero(gate);
                     acc.specular[i] = acc.specular[i] + V3::splat(light.specular).scale(weight);

@@ -251,7 +251,7 @@ pub struct Prepared<T: Real> {
     pub separate_specular: bool,
     /// Blinn or Phong.
     pub specular: Specular,
-    /// f_i of eq. 2.2: no specular unless n·VP > 0.
+    /// f_i of eq. 2.2 on (GL) or off (learnopengl); see [`Scene::specular_gate`].
     pub specular_gate: bool,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,
@@ -365,7 +365,7 @@ impl<T: Real> Prepared<T> {
             sides: 1 + usize::from(scene.two_side),
             separate_specular: scene.separate_specular,
             specular: scene.specular,
-            specular_gate: true,
+            specular_gate: scene.specular_gate,
             color_material: options.color_material,
         })
     }

@@ -52,6 +52,10 @@ pub struct Scene {
     pub separate_specular: bool,
     /// The specular vector.
     pub specular: Specular,
+    /// GL's f_i (eq. 2.2): no specular from a light unless n·VP > 0. `false` drops the gate, as
+    /// learnopengl's shaders do: the specular term is then added wherever n ≠ 0 and VP ≠ 0,
+    /// the diffuse term is still (n ⊙ VP).
+    pub specular_gate: bool,
 }
 
 impl Default for Scene {
@@ -66,6 +70,7 @@ impl Default for Scene {
             two_side: false,
             separate_specular: false,
             specular: Specular::Blinn,
+            specular_gate: true,
         }
     }
 }

@@ -4,7 +4,8 @@ Written from the specification, term by term, as the test oracle: it shares no c
 glshade. Where the spec says "undefined", it follows the conventions DESIGN.md pins (for a
 shininess above 0, a zero halfway or reflection vector or a viewer at the vertex gives no
 specular, while a shininess of 0 gives 0^0 = 1 whatever they are; VP = 0 for a light at the
-vertex; cos(90 deg) is exactly 0). Lights and materials are plain dicts with GL's names.
+vertex; cos(90 deg) is exactly 0). `specular_gate=False` replaces f_i by 1 (learnopengl's
+shaders). Lights and materials are plain dicts with GL's names.
 """
 
 from __future__ import annotations
@@ -47,6 +48,7 @@ class RefScene:
     two_side: bool = False
     separate_specular: bool = False
     specular: str = "blinn"
+    specular_gate: bool = True  # False: learnopengl's shaders, no f_i on the specular term
     modelview: np.ndarray | None = None
     normalize: bool = False
     rescale_normal: bool = False
@@ -172,7 +174,12 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
                 spot = np.where(c >= cos_c, c ** L["spot_exponent"], 0.0)
                 margin = np.minimum(margin, np.abs(dot(-VP, sdl) - cos_c))
             n_dot_vp = dot(n, VP)
-            f = (np.maximum(n_dot_vp, 0.0) != 0).astype(np.float64)  # eq. 2.2
+            if s.specular_gate:
+                f = (np.maximum(n_dot_vp, 0.0) != 0).astype(np.float64)  # eq. 2.2
+            else:
+                # No f_i; the pinned conventions still give no specular without a direction
+                # (a zero normal, or VP = 0 for a light at the vertex).
+                f = ((dot(n, n) > 0) & (dot(VP, VP) > 0)).astype(np.float64)
             n_hat = unit(n)
             margin = np.minimum(margin, np.abs(dot(n_hat, VP)))
             if s.specular == "blinn":

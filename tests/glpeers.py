@@ -203,6 +203,8 @@ def load_fixed_function(
         raise ValueError(f"fixed-function GL has {GL_MAX_LIGHTS} lights, the scene {len(lights)}")
     if scene.specular != "blinn":
         raise ValueError("fixed-function GL has only the halfway vector (specular='blinn')")
+    if not scene.specular_gate:
+        raise ValueError("fixed-function GL always has the specular gate f_i (eq. 2.2)")
     viewer = tuple(float(x) for x in scene.viewer)
     if viewer not in ((0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0)):
         raise ValueError(f"GL's viewer is (0, 0, 1, 0) or (0, 0, 0, 1), got {viewer}")
@@ -360,6 +362,7 @@ def pack_scene(
         "ff_two_side": i4(int(scene.two_side)),
         "ff_separate_specular": i4(int(scene.separate_specular)),
         "ff_phong": i4(int(scene.specular == "phong")),
+        "ff_specular_gate": i4(int(scene.specular_gate)),
         "ff_color_material": i4(COLOR_MATERIAL_MODES[color_material]),
         "ff_color_material_faces": i4(
             COLOR_MATERIAL_FACES[color_material_face] if color_material else 0

@@ -114,6 +114,7 @@ def random_case(seed: int, n: int, dtype: Any) -> Case:
         ref.color_material = str(rng.choice(COLOR_MATERIAL_MODES))
         ref.color_material_face = str(rng.choice(FACES))
         ref.colors = rng.uniform(-0.1, 1.0, (n, int(rng.choice([3, 4]))))
+    ref.specular_gate = bool(rng.random() < 0.7)  # drawn last: earlier draws keep their values
     positions = positions.astype(dtype)
     normals = normals.astype(dtype)
     if ref.colors is not None:
@@ -135,6 +136,7 @@ def to_glshade(ref: RefScene) -> gs.Scene:
         two_side=ref.two_side,
         separate_specular=ref.separate_specular,
         specular=ref.specular,
+        specular_gate=ref.specular_gate,
     )
 
 
@@ -161,6 +163,7 @@ def describe(ref: RefScene) -> str:
     return (
         f"{len(ref.lights)} lights {kinds} ({spots} spot), viewer={ref.viewer}, "
         f"two_side={ref.two_side}, separate={ref.separate_specular}, {ref.specular}, "
+        f"specular_gate={ref.specular_gate}, "
         f"modelview={ref.modelview is not None}, normalize={ref.normalize}, "
         f"rescale={ref.rescale_normal}, color_material={ref.color_material}"
         f"/{ref.color_material_face}, shininess={ref.material['shininess']:.3g}"

@@ -263,8 +263,8 @@ def test_native_module_rejects_bad_arrays_without_crashing() -> None:
         SCENE.global_ambient,
         SCENE.viewer,
     ]
-    tail = [False, False, "blinn", None, False, False, None, None, "front_and_back", "fast"]
-    tail += [False, None]
+    tail = [False, False, "blinn", True, None, False, False, None, None, "front_and_back"]
+    tail += ["fast", False, None]
     with pytest.raises(TypeError, match="positions must be float32 or float64"):
         _glshade.shade(P.astype(np.int32), N, *args, *tail)
     with pytest.raises(TypeError, match="normals"):
@@ -413,3 +413,15 @@ def test_typing_files_are_shipped() -> None:
     assert (package / "py.typed").exists()
     assert (package / "_glshade.pyi").exists()
     assert hashlib.sha256((package / "_glshade.pyi").read_bytes()).hexdigest()
+
+
+def test_specular_gate_is_part_of_the_scene() -> None:
+    scene = gs.Scene()
+    assert scene.specular_gate is True
+    off = gs.Scene(specular_gate=False)
+    assert "specular_gate=False" in repr(off)
+    assert off != scene
+    assert gs.Scene(specular_gate=False) == off
+    assert gs.Scene(specular="phong") != scene
+    with pytest.raises(TypeError, match="specular_gate must be True or False, got 'no'"):
+        gs.Scene(specular_gate="no")  # type: ignore[arg-type]

@@ -335,6 +335,57 @@ def test_13_local_viewer_moves_the_highlight(dtype: type) -> None:
     close(local[:3], [(h[2] / np.linalg.norm(h)) ** 30] * 3, dtype)
 
 
+def test_15_specular_gate_off_lights_the_back_with_specular_only(dtype: type) -> None:
+    # L = (0, 0.8, -0.6) behind n = +z: n.L = -0.6, so GL (f_i = 0) gives no specular and
+    # no diffuse. Without the gate (learnopengl) the specular stays.
+    m = gs.Material(**{**BLACK_MATERIAL, "diffuse": (1, 1, 1)})
+    light = gs.Light(position=(0, 0.8, -0.6, 0))
+    for spec, viewer, expected in (
+        # Phong: R = 2(n.L)n - L = (0, -0.8, -0.6) points straight at this viewer: R.V = 1.
+        ("phong", (0, -0.8, -0.6, 0), 1.0),
+        # Blinn: h = normalize(L + (0, 0, 1)) = (0, 0.8, 0.4)/|.|, n.h = 0.4/sqrt(0.8).
+        ("blinn", (0, 0, 1, 0), (0.4 / np.sqrt(0.8)) ** 5),
+    ):
+        for gate, factor in ((True, 0.0), (False, expected)):
+            material = gs.Material(**{**BLACK_MATERIAL, "specular": (0.5, 0.25, 1), "shininess": 5})
+            scene = gs.Scene(
+                lights=[light],
+                material=material,
+                global_ambient=(0, 0, 0),
+                viewer=viewer,
+                specular=spec,
+                specular_gate=gate,
+            )
+            got = shade1(scene, (0, 0, 0), UP, dtype)
+            close(got, (0.5 * factor, 0.25 * factor, factor, 1), dtype)
+    # The diffuse term keeps its max(n.L, 0) either way.
+    for gate in (True, False):
+        scene = gs.Scene(lights=[light], material=m, global_ambient=(0, 0, 0), specular_gate=gate)
+        close(shade1(scene, (0, 0, 0), UP, dtype), (0, 0, 0, 1), dtype)
+
+
+def test_15_specular_gate_off_keeps_the_undefined_cases_dark(dtype: type) -> None:
+    # Shininess 0 makes any specular 0^0 = 1, so only the direction rules can keep it off.
+    m = gs.Material(**{**BLACK_MATERIAL, "specular": (1, 1, 1), "shininess": 0})
+    behind = gs.Scene(
+        lights=[gs.Light(position=(0, 0.8, -0.6, 0))],
+        material=m,
+        global_ambient=(0, 0, 0),
+        specular_gate=False,
+    )
+    close(shade1(behind, (0, 0, 0), UP, dtype), (1, 1, 1, 1), dtype)  # f_i = 1: 0^0 = 1
+    close(shade1(behind, (0, 0, 0), (0, 0, 0), dtype), (0, 0, 0, 1), dtype)  # zero normal
+    for spec in ("blinn", "phong"):
+        at_vertex = gs.Scene(
+            lights=[gs.Light(position=(1, 2, 3, 1))],
+            material=m,
+            global_ambient=(0, 0, 0),
+            specular=spec,
+            specular_gate=False,
+        )
+        close(shade1(at_vertex, (1, 2, 3), UP, dtype), (0, 0, 0, 1), dtype)  # VP = 0
+
+
 # --- conventions where GL says "undefined" ----------------------------------------------------
 
 

@@ -7,10 +7,13 @@
 (1000, 4)
 """
 
+from . import presets
+from ._area_lights import disc_light, rectangle_light
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
+from ._shade_mesh import shade_mesh
 
 __all__ = [
     "Light",
@@ -18,7 +21,11 @@ __all__ = [
     "Material",
     "Scene",
     "__version__",
+    "disc_light",
     "face_normals",
+    "presets",
+    "rectangle_light",
     "shade",
+    "shade_mesh",
     "vertex_normals",
 ]

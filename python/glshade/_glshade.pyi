@@ -32,6 +32,7 @@ def check_scene(
     global_ambient: NDArray[np.float64],
     viewer: NDArray[np.float64],
     specular: str,
+    specular_gate: bool,
 ) -> None: ...
 def output_names(two_side: bool, separate_specular: bool) -> list[str]: ...
 def shade(
@@ -45,6 +46,7 @@ def shade(
     two_side: bool,
     separate_specular: bool,
     specular: str,
+    specular_gate: bool,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,
@@ -64,6 +66,7 @@ def describe(
     two_side: bool,
     separate_specular: bool,
     specular: str,
+    specular_gate: bool,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,

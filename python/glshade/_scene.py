@@ -367,6 +367,11 @@ class Scene:
         ``GL_SEPARATE_SPECULAR_COLOR``: `shade` returns the specular sum as a secondary colour.
     specular : {"blinn", "phong"}
         GL's halfway vector ``(n . h)^s`` or the reflection vector ``(R . V)^s``.
+    specular_gate : bool
+        GL's ``f_i`` (eq. 2.2, default True): a light adds no specular unless ``n . VP > 0``.
+        False drops the gate, as learnopengl's shaders do: the specular term is added wherever
+        its cosine is positive, even where ``n . VP <= 0`` (the diffuse term is still
+        ``max(n . VP, 0)``). A zero normal or a light at the vertex still gives no specular.
 
     Attributes
     ----------
@@ -385,6 +390,7 @@ class Scene:
         "material",
         "separate_specular",
         "specular",
+        "specular_gate",
         "two_side",
     )
 
@@ -398,6 +404,7 @@ class Scene:
         two_side: bool = False,
         separate_specular: bool = False,
         specular: Literal["blinn", "phong"] = "blinn",
+        specular_gate: bool = True,
     ) -> None:
         if isinstance(lights, Lights):
             self._lights = lights
@@ -422,6 +429,9 @@ class Scene:
         if not isinstance(specular, str):
             raise TypeError(f"specular must be 'blinn' or 'phong', got {specular!r}")
         self.specular = specular
+        if not isinstance(specular_gate, (bool, np.bool_)):
+            raise TypeError(f"specular_gate must be True or False, got {specular_gate!r}")
+        self.specular_gate = bool(specular_gate)
         _glshade.check_scene(
             self._lights.table,
             self.material.row,
@@ -429,6 +439,7 @@ class Scene:
             self._global_ambient,
             self._viewer,
             self.specular,
+            self.specular_gate,
         )
 
     @property
@@ -489,6 +500,7 @@ class Scene:
             self.two_side,
             self.separate_specular,
             self.specular,
+            self.specular_gate,
             None if modelview is None else matrix4(modelview, "modelview"),
             bool(normalize),
             bool(rescale_normal),
@@ -505,5 +517,20 @@ class Scene:
             f"Scene({self._lights!r}, material={self.material!r}, "
             f"global_ambient={f(self._global_ambient)}, viewer={f(self._viewer)}, "
             f"two_side={self.two_side}, separate_specular={self.separate_specular}, "
-            f"specular={self.specular!r})"
+            f"specular={self.specular!r}, specular_gate={self.specular_gate})"
         )
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return (
+            self._lights == other._lights
+            and self.material == other.material
+            and self.back_material == other.back_material
+            and np.array_equal(self._global_ambient, other._global_ambient)
+            and np.array_equal(self._viewer, other._viewer)
+            and (self.two_side, self.separate_specular, self.specular, self.specular_gate)
+            == (other.two_side, other.separate_specular, other.specular, other.specular_gate)
+        )
+
+    __hash__ = None  # type: ignore[assignment]

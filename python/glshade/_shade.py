@@ -119,6 +119,7 @@ def shade(
         scene.two_side,
         scene.separate_specular,
         scene.specular,
+        scene.specular_gate,
         m,
         bool(normalize),
         bool(rescale_normal),

@@ -126,6 +126,7 @@ fn scene_from(
     two_side: bool,
     separate_specular: bool,
     specular: &str,
+    specular_gate: bool,
 ) -> PyResult<Scene> {
     Ok(Scene {
         lights: lights_from(lights)?,
@@ -136,6 +137,7 @@ fn scene_from(
         two_side,
         separate_specular,
         specular: Specular::parse(specular).map_err(to_pyerr)?,
+        specular_gate,
     })
 }
 
@@ -148,6 +150,7 @@ fn check_scene(
     global_ambient: PyReadonlyArray1<'_, f64>,
     viewer: PyReadonlyArray1<'_, f64>,
     specular: &str,
+    specular_gate: bool,
 ) -> PyResult<()> {
     let scene = scene_from(
         &lights,
@@ -158,6 +161,7 @@ fn check_scene(
         false,
         false,
         specular,
+        specular_gate,
     )?;
     scene.validate().map_err(to_pyerr)
 }

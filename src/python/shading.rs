@@ -142,8 +142,8 @@ fn options_from(
 #[pyfunction]
 #[pyo3(signature = (
     positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
-    separate_specular, specular, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face, accuracy, strict, out
+    separate_specular, specular, specular_gate, modelview, normalize, rescale_normal, colors,
+    color_material, color_material_face, accuracy, strict, out
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
@@ -157,6 +157,7 @@ pub fn shade<'py>(
     two_side: bool,
     separate_specular: bool,
     specular: &str,
+    specular_gate: bool,
     modelview: Option<PyReadonlyArray2<'py, f64>>,
     normalize: bool,
     rescale_normal: bool,
@@ -185,6 +186,7 @@ pub fn shade<'py>(
         two_side,
         separate_specular,
         specular,
+        specular_gate,
     )?;
     let call = Call { scene, options };
     match float_of(py, positions, "positions")? {
@@ -198,8 +200,8 @@ pub fn shade<'py>(
 #[pyfunction]
 #[pyo3(signature = (
     lights, material, back_material, global_ambient, viewer, two_side, separate_specular,
-    specular, modelview, normalize, rescale_normal, color_material, color_material_face,
-    accuracy, strict, dtype
+    specular, specular_gate, modelview, normalize, rescale_normal, color_material,
+    color_material_face, accuracy, strict, dtype
 ))]
 pub fn describe(
     lights: PyReadonlyArray2<'_, f64>,
@@ -210,6 +212,7 @@ pub fn describe(
     two_side: bool,
     separate_specular: bool,
     specular: &str,
+    specular_gate: bool,
     modelview: Option<PyReadonlyArray2<'_, f64>>,
     normalize: bool,
     rescale_normal: bool,
@@ -237,6 +240,7 @@ pub fn describe(
         two_side,
         separate_specular,
         specular,
+        specular_gate,
     )?;
     match dtype {
         "float32" => crate::shade::describe::<f32>(&scene, &options),

@@ -38,6 +38,7 @@ uniform vec4 ff_viewer;          // (0,0,1,0): infinite viewer; (0,0,0,1): local
 uniform int ff_two_side;         // LIGHT_MODEL_TWO_SIDE
 uniform int ff_separate_specular;  // LIGHT_MODEL_COLOR_CONTROL = SEPARATE_SPECULAR_COLOR
 uniform int ff_phong;            // 1: (R.VP_e)^s with R = 2(n.VP)n - VP instead of (n.h)^s
+uniform int ff_specular_gate;    // 1: GL's f_i; 0: specular wherever n and VP have a direction
 // COLOR_MATERIAL: 0 off, 1 ambient, 2 diffuse, 3 specular, 4 emission, 5 ambient and diffuse;
 // faces: bit 0 front, bit 1 back.
 uniform int ff_color_material;
@@ -119,20 +120,22 @@ FFColor ff_lighting(vec3 V, vec3 n, int side, vec4 color) {
             spot = c >= ff_spot_cos_cutoff[i] ? ff_pow(c, ff_spot_exponent[i]) : 0.0;
         }
         float n_dot_vp = dot(n, VP);
-        float power = 0.0;  // (n (.) h)^s_rm, or (R (.) VP_e)^s_rm
-        if (ff_phong == 0) {
+        float power = 1.0;  // (n (.) h)^s_rm, or (R (.) VP_e)^s_rm; 0^0 = 1 whatever h or R
+        if (s_rm != 0.0 && ff_phong == 0) {
             vec3 h = VP + VPe;  // eq. 2.3
             float h_len = sqrt(dot(h, h));
             power = h_len > 0.0 ? ff_pow(max(dot(n, h / h_len), 0.0), s_rm) : 0.0;
-        } else {
+        } else if (s_rm != 0.0) {
             vec3 R = 2.0 * n_dot_vp * n - VP;
             power = dot(VPe, VPe) > 0.0 ? ff_pow(max(dot(R, VPe), 0.0), s_rm) : 0.0;
         }
         float w = att * spot;
         c_pri += w * a_cm.rgb * ff_light_ambient[i];
         c_pri += w * max(n_dot_vp, 0.0) * d_cm.rgb * ff_light_diffuse[i];
-        // eq. 2.2: f_i = 0 unless n.VP > 0 (a select: power may be huge where f_i = 0)
-        vec3 spec = n_dot_vp > 0.0 ? w * power * s_cm.rgb * ff_light_specular[i] : vec3(0.0);
+        // eq. 2.2: f_i = 0 unless n.VP > 0 (a select: power may be huge where f_i = 0); without
+        // the gate (learnopengl) only a zero n or VP, which have no direction, gives no specular.
+        bool f_i = ff_specular_gate != 0 ? n_dot_vp > 0.0 : dot(n, n) > 0.0 && dot(VP, VP) > 0.0;
+        vec3 spec = f_i ? w * power * s_cm.rgb * ff_light_specular[i] : vec3(0.0);
         if (ff_separate_specular != 0) {
             c_sec += spec;
         } else {

@@ -1,0 +1,440 @@
+"""The lighting models of glshade's source documents, each one call in that model's own terms.
+
+Each function takes the parameters a document names (``l_a``, ``m_d`` and ``p`` for the
+DirectX 11 tutorial; ``ambientStrength``, ``objectColor`` and ``viewPos`` for learnopengl; ``k_a``,
+``I_l`` and ``n`` for the lecture's Phong model) and returns a `Preset`: the `Scene` and the
+`shade` keywords that make glshade compute exactly that model. Nothing here is a new equation:
+each model is GL state (lights, materials, global ambient, viewer, ``specular="phong"``,
+``specular_gate``, ``normalize``, ``modelview``), so it runs in the same kernel as everything else.
+
+>>> import numpy as np, glshade as gs
+>>> model = gs.presets.learnopengl(light_pos=(1.2, 1.0, 2.0), view_pos=(0.0, 0.0, 3.0))
+>>> model.shade(np.zeros((1, 3)), np.array([[0.0, 0.0, 1.0]])).round(4)
+array([[0.8884, 0.4442, 0.2754, 1.    ]])
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from ._arrays import FloatArray
+from ._normals import Weighting
+from ._params import real_array, rgb, scalar, vector3
+from ._scene import Light, Lights, Material, Scene
+from ._shade import shade
+from ._shade_mesh import shade_mesh
+
+__all__ = ["Preset", "directx11", "learnopengl", "opengl", "phong_illumination"]
+
+_BLACK = (0.0, 0.0, 0.0, 1.0)
+
+
+def _no_kwargs() -> Mapping[str, Any]:
+    return MappingProxyType({})
+
+
+@dataclass(frozen=True)
+class Preset:
+    """A lighting model as glshade state.
+
+    Attributes
+    ----------
+    scene : Scene
+        Lights, material and light model.
+    shade_kwargs : Mapping[str, Any]
+        The `shade` keywords the model needs (``normalize``, ``modelview``), read-only.
+    """
+
+    scene: Scene
+    shade_kwargs: Mapping[str, Any] = field(default_factory=_no_kwargs)
+
+    def shade(self, positions: ArrayLike, normals: ArrayLike, **extra: Any) -> FloatArray:
+        """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``."""
+        return shade(positions, normals, self.scene, **{**self.shade_kwargs, **extra})
+
+    def shade_mesh(
+        self,
+        vertices: Any,
+        faces: ArrayLike | None = None,
+        *,
+        per: Literal["vertex", "face"] = "vertex",
+        weighting: Weighting = "angle",
+        **extra: Any,
+    ) -> FloatArray:
+        """`shade_mesh` with this model: per vertex (smooth) or per face (flat)."""
+        kwargs = {**self.shade_kwargs, **extra}
+        return shade_mesh(vertices, faces, scene=self.scene, per=per, weighting=weighting, **kwargs)
+
+
+def _one_light(
+    light_vector: ArrayLike | None, light_position: ArrayLike | None, names: tuple[str, str]
+) -> tuple[ArrayLike, float]:
+    """The light's (x, y, z) and GL's w: 0 for a direction towards the light, 1 for a point."""
+    if (light_vector is None) == (light_position is None):
+        given = "both" if light_vector is not None else "neither"
+        raise TypeError(
+            f"give exactly one of {names[0]} (a directional light) and {names[1]} "
+            f"(a point light), got {given}"
+        )
+    if light_vector is not None:
+        return light_vector, 0.0
+    assert light_position is not None
+    return light_position, 1.0
+
+
+def opengl(
+    lights: Lights | Iterable[Lights] = (),
+    material: Material | None = None,
+    *,
+    global_ambient: ArrayLike = (0.2, 0.2, 0.2, 1.0),
+    local_viewer: bool = False,
+) -> Preset:
+    """The OpenGL 2.1 lighting equation (document 000): glshade's default `Scene`.
+
+    ``c = e_cm + a_cm*a_cs + sum_i att_i spot_i [a_cm*a_cli + (n . VP) d_cm*d_cli
+    + f_i (n . h)^s_rm s_cm*s_cli]``, with GL's lights (`Light`) and material (`Material`).
+
+    Parameters
+    ----------
+    lights : Lights, Light, or a sequence of them
+        The lights (eye coordinates), with GL's parameters P_pli, a_cli, d_cli, s_cli, k0..k2,
+        s_dli, s_rli, c_rli.
+    material : Material, optional
+        e_cm, a_cm, d_cm, s_cm, s_rm (default: GL's).
+    global_ambient : (3,) or (4,) float
+        a_cs, ``GL_LIGHT_MODEL_AMBIENT``.
+    local_viewer : bool
+        v_bs, ``GL_LIGHT_MODEL_LOCAL_VIEWER``: h = VP + VP_e (viewer at the eye) instead of
+        VP + (0, 0, 1).
+
+    Returns
+    -------
+    Preset
+        The scene; no `shade` keywords (GL does not normalize normals by default).
+    """
+    if not isinstance(local_viewer, (bool, np.bool_)):
+        raise TypeError(f"local_viewer must be True or False, got {local_viewer!r}")
+    viewer = (0.0, 0.0, 0.0, 1.0) if local_viewer else (0.0, 0.0, 1.0, 0.0)
+    return Preset(
+        Scene(lights=lights, material=material, global_ambient=global_ambient, viewer=viewer)
+    )
+
+
+def directx11(
+    *,
+    l_a: ArrayLike,
+    l_d: ArrayLike,
+    l_s: ArrayLike,
+    m_a: ArrayLike,
+    m_d: ArrayLike,
+    m_s: ArrayLike,
+    p: float,
+    eye_position: ArrayLike,
+    light_vector: ArrayLike | None = None,
+    light_position: ArrayLike | None = None,
+) -> Preset:
+    """The DirectX 11 tutorial's lighting (document 001, Luna's model as taught by Chili).
+
+    ``LitColor = l_a (x) m_a + k_d l_d (x) m_d + k_s l_s (x) m_s = A + k_d D + k_s S`` with
+    ``k_d = max(L . n, 0)`` and ``k_s = max(v . r, 0)^p`` where ``L . n > 0``, else 0: the
+    reflection vector ``r`` of the light about the unit normal, ``v`` the unit vector to the eye.
+
+    Parameters
+    ----------
+    l_a, l_d, l_s : (3,) or (4,) float
+        The light's ambient, diffuse and specular colours.
+    m_a, m_d, m_s : (3,) or (4,) float
+        The material's; the output alpha is m_d's (1 for an RGB m_d).
+    p : float
+        The specular exponent, >= 0.
+    eye_position : (3,) float
+        The eye, in the space of the positions: ``v = normalize(eye_position - position)``.
+    light_vector : (3,) float, optional
+        L for a directional light: the direction towards the light (normalised here).
+    light_position : (3,) float, optional
+        A point light: ``L = normalize(light_position - position)``, no attenuation (the
+        document has none). Give exactly one of `light_vector` and `light_position`.
+
+    Returns
+    -------
+    Preset
+        A scene with one light whose ambient is not attenuated (GL's att = 1 here), no global
+        ambient or emission, ``specular="phong"`` with GL's gate; and ``normalize=True``, since
+        the document takes n as a unit vector.
+    """
+    colors = {
+        name: rgb(value, name, alpha=True)
+        for name, value in (
+            ("l_a", l_a),
+            ("l_d", l_d),
+            ("l_s", l_s),
+            ("m_a", m_a),
+            ("m_d", m_d),
+            ("m_s", m_s),
+        )
+    }
+    shininess = scalar(p, "p", minimum=0.0)
+    eye = vector3(eye_position, "eye_position")
+    xyz, w = _one_light(light_vector, light_position, ("light_vector", "light_position"))
+    where = vector3(xyz, "light_vector" if w == 0 else "light_position", nonzero=w == 0)
+    light = Light(
+        position=(*where, w), ambient=colors["l_a"], diffuse=colors["l_d"], specular=colors["l_s"]
+    )
+    material = Material(
+        ambient=colors["m_a"],
+        diffuse=colors["m_d"],
+        specular=colors["m_s"],
+        emission=_BLACK,
+        shininess=shininess,
+    )
+    scene = Scene(
+        lights=[light],
+        material=material,
+        global_ambient=_BLACK,
+        viewer=(*eye, 1.0),
+        specular="phong",
+    )
+    return Preset(scene, MappingProxyType({"normalize": True}))
+
+
+def _model_matrix(model: ArrayLike | None) -> FloatArray | None:
+    if model is None:
+        return None
+    m = real_array(model, "model")
+    if m.shape != (4, 4):
+        raise ValueError(f"model must have shape (4, 4), got {m.shape}")
+    if not np.array_equal(m[3], (0.0, 0.0, 0.0, 1.0)):
+        raise ValueError(f"model must be affine (last row (0, 0, 0, 1)), got last row {m[3]}")
+    det = float(np.linalg.det(m[:3, :3]))
+    if det == 0.0 or not np.isfinite(det):
+        raise ValueError(
+            "model must be invertible (its normal matrix is its inverse transpose), "
+            f"got determinant {det:g} for the upper-left 3x3"
+        )
+    return m
+
+
+def learnopengl(
+    *,
+    light_pos: ArrayLike = (1.2, 1.0, 2.0),
+    view_pos: ArrayLike = (0.0, 0.0, 3.0),
+    light_color: ArrayLike = (1.0, 1.0, 1.0),
+    object_color: ArrayLike = (1.0, 0.5, 0.31),
+    ambient_strength: float = 0.1,
+    specular_strength: float = 0.5,
+    shininess: float = 32.0,
+    model: ArrayLike | None = None,
+) -> Preset:
+    """learnopengl's Basic Lighting shader (document 002), per vertex, in world space.
+
+    ``result = (ambientStrength * lightColor + diff * lightColor
+    + specularStrength * spec * lightColor) * objectColor`` with
+    ``diff = max(dot(norm, lightDir), 0)``, ``spec = pow(max(dot(viewDir, reflectDir), 0), 32)``,
+    ``reflectDir = reflect(-lightDir, norm)``, ``norm = normalize(mat3(transpose(inverse(model)))
+    * aNormal)``, ``FragPos = vec3(model * vec4(aPos, 1))``; alpha 1. There is no gate: a
+    highlight may appear where ``dot(norm, lightDir) <= 0``, as in the shader.
+
+    Parameters
+    ----------
+    light_pos, view_pos : (3,) float
+        ``lightPos`` and ``viewPos``, world space. The defaults are the tutorial's
+        (``lightPos(1.2, 1.0, 2.0)``, the camera at (0, 0, 3)).
+    light_color, object_color : (3,) float
+        ``lightColor`` and ``objectColor``; defaults the tutorial's (1, 1, 1) and (1, 0.5, 0.31).
+    ambient_strength, specular_strength : float
+        ``ambientStrength`` (0.1) and ``specularStrength`` (0.5).
+    shininess : float
+        The exponent the shader writes as 32, >= 0.
+    model : (4, 4) float, optional
+        The model matrix, as numpy prints it (``model @ (x, y, z, 1)``; a flat glm array is its
+        transpose). Affine and invertible. Default: the identity (positions are world space).
+
+    Returns
+    -------
+    Preset
+        Ambient as the global ambient ``ambientStrength * lightColor`` on material ambient
+        ``objectColor``; one unattenuated point light with diffuse ``lightColor`` and specular
+        ``specularStrength * lightColor``; every material colour ``objectColor``; a viewer at
+        ``viewPos``; ``specular="phong"``, ``specular_gate=False``; and ``normalize=True``,
+        ``modelview=model``.
+    """
+    light = rgb(light_color, "light_color")
+    obj = rgb(object_color, "object_color")
+    ambient = scalar(ambient_strength, "ambient_strength")
+    strength = scalar(specular_strength, "specular_strength")
+    exponent = scalar(shininess, "shininess", minimum=0.0)
+    position = vector3(light_pos, "light_pos")
+    viewer = vector3(view_pos, "view_pos")
+    matrix = _model_matrix(model)
+    scene = Scene(
+        lights=[
+            Light(
+                position=(*position, 1.0),
+                ambient=_BLACK,
+                diffuse=light,
+                specular=strength * light,
+            )
+        ],
+        material=Material(
+            ambient=obj, diffuse=obj, specular=obj, emission=_BLACK, shininess=exponent
+        ),
+        global_ambient=ambient * light,
+        viewer=(*viewer, 1.0),
+        specular="phong",
+        specular_gate=False,
+    )
+    kwargs: dict[str, Any] = {"normalize": True}
+    if matrix is not None:
+        kwargs["modelview"] = matrix
+    return Preset(scene, MappingProxyType(kwargs))
+
+
+def _attenuation(value: Any) -> tuple[float, float, float]:
+    if value is None:
+        return (1.0, 0.0, 0.0)
+    if isinstance(value, str):
+        if value != "inverse_square":
+            raise ValueError(
+                f"attenuation must be None, 'inverse_square' or (a0, a1, a2), got {value!r}"
+            )
+        return (0.0, 0.0, 1.0)
+    a = real_array(value, "attenuation")
+    if a.shape != (3,) or (a < 0).any() or not a.any():
+        raise ValueError(
+            f"attenuation must be (a0, a1, a2) with every a >= 0 and not all 0, got {value!r}"
+        )
+    return (float(a[0]), float(a[1]), float(a[2]))
+
+
+def phong_illumination(
+    *,
+    k_a: float,
+    k_d: float,
+    k_s: float,
+    n: float,
+    I_a: ArrayLike,
+    I_l: ArrayLike,
+    viewer_position: ArrayLike,
+    light_position: ArrayLike | None = None,
+    light_direction: ArrayLike | None = None,
+    attenuation: Literal["inverse_square"] | ArrayLike | None = None,
+    spot_direction: ArrayLike | None = None,
+    spot_cutoff: float | None = None,
+    spot_exponent: float | None = None,
+) -> Preset:
+    """The lecture's Phong illumination model (document 004), with its attenuations.
+
+    ``I = k_a I_a + sum_l f_rad(d_l) f_ang [k_d I_l (N . L) + k_s I_l (R . V)^n]`` with
+    ``R = 2 (N . L) N - L``; the diffuse and specular terms only where ``N . L > 0`` and
+    ``(R . V)`` taken as ``max(R . V, 0)`` (the angle limited to [0, 90] degrees). N, L, R, V
+    are unit vectors. Each RGB channel is computed alike.
+
+    Parameters
+    ----------
+    k_a, k_d, k_s : float
+        The ambient, diffuse and specular reflection coefficients (scalars), >= 0.
+    n : float
+        The glossiness exponent, >= 0.
+    I_a : float or (3,) float
+        The ambient light's intensity (a number is grey).
+    I_l : float, (3,) or (L, 3) float
+        The intensity of the light, or one row per light.
+    viewer_position : (3,) float
+        The viewer: ``V = normalize(viewer_position - position)``.
+    light_position : (3,) or (L, 3) float, optional
+        Point lights: ``L = normalize(light_position - position)``.
+    light_direction : (3,) or (L, 3) float, optional
+        Infinitely distant lights: L, the direction towards the light (normalised here); never
+        attenuated. Give exactly one of `light_position` and `light_direction`.
+    attenuation : None, "inverse_square" or (a0, a1, a2)
+        Radial attenuation of point lights: none, ``1 / d^2``, or ``1 / (a0 + a1 d + a2 d^2)``.
+    spot_direction : (3,) or (L, 3) float, optional
+        Angular attenuation: the cone's axis (from the light outwards). A point inside the cone
+        gets ``(V_obj . V_light)^a_l``, V_obj the unit vector from the light to the point;
+        outside it gets 0. Default: no angular attenuation.
+    spot_cutoff : float or (L,) float, optional
+        θ_l, the cone's half-angle in degrees, in [0, 90] (default 90).
+    spot_exponent : float or (L,) float, optional
+        a_l, >= 0 (default 0).
+
+    Returns
+    -------
+    Preset
+        Material ambient, diffuse and specular ``k_a``, ``k_d``, ``k_s`` (grey), global
+        ambient ``I_a``, lights of diffuse and specular ``I_l``, a viewer at `viewer_position`,
+        ``specular="phong"`` with GL's gate; and ``normalize=True``.
+    """
+    ka, kd, ks = (
+        scalar(v, name, minimum=0.0) for v, name in ((k_a, "k_a"), (k_d, "k_d"), (k_s, "k_s"))
+    )
+    exponent = scalar(n, "n", minimum=0.0)
+    ambient = rgb(I_a, "I_a", grey=True)
+    intensity = real_array(I_l, "I_l")
+    if intensity.ndim == 0:
+        intensity = np.full(3, float(intensity))
+    elif intensity.shape[-1:] != (3,) or intensity.ndim > 2:
+        raise ValueError(
+            f"I_l must be a number or have shape (3,) or (L, 3), got {intensity.shape}"
+        )
+    viewer = vector3(viewer_position, "viewer_position")
+    xyz, w = _one_light(light_direction, light_position, ("light_direction", "light_position"))
+    name = "light_direction" if w == 0 else "light_position"
+    where = vector3(xyz, name, rows=True, nonzero=w == 0)
+    if intensity.ndim == 2 and (where.ndim != 2 or len(where) != len(intensity)):
+        raise ValueError(
+            f"I_l has {len(intensity)} rows, so {name} must have shape ({len(intensity)}, 3), "
+            f"got {where.shape}"
+        )
+    k0, k1, k2 = _attenuation(attenuation)
+    spot: dict[str, Any] = {}
+    if spot_direction is None:
+        if spot_cutoff is not None or spot_exponent is not None:
+            raise TypeError("spot_cutoff and spot_exponent need a spot_direction")
+    else:
+        cutoff = real_array(90.0 if spot_cutoff is None else spot_cutoff, "spot_cutoff")
+        if cutoff.ndim > 1 or ((cutoff < 0) | (cutoff > 90)).any():
+            raise ValueError(
+                f"spot_cutoff must be in [0, 90] degrees (a number or (L,)), got {spot_cutoff!r}"
+            )
+        exp = real_array(0.0 if spot_exponent is None else spot_exponent, "spot_exponent")
+        if exp.ndim > 1 or (exp < 0).any():
+            raise ValueError(
+                f"spot_exponent must be >= 0 (a number or (L,)), got {spot_exponent!r}"
+            )
+        spot = {
+            "spot_direction": vector3(spot_direction, "spot_direction", rows=True, nonzero=True),
+            "spot_cutoff": cutoff,
+            "spot_exponent": exp,
+        }
+    homogeneous = np.concatenate([where, np.full((*where.shape[:-1], 1), w)], axis=-1)
+    lights = Lights(
+        position=homogeneous,
+        ambient=_BLACK,
+        diffuse=intensity,
+        specular=intensity,
+        constant_attenuation=k0,
+        linear_attenuation=k1,
+        quadratic_attenuation=k2,
+        **spot,
+    )
+    material = Material(
+        ambient=(ka, ka, ka),
+        diffuse=(kd, kd, kd),
+        specular=(ks, ks, ks),
+        emission=_BLACK,
+        shininess=exponent,
+    )
+    scene = Scene(
+        lights=lights,
+        material=material,
+        global_ambient=ambient,
+        viewer=(*viewer, 1.0),
+        specular="phong",
+    )
+    return Preset(scene, MappingProxyType({"normalize": True}))
