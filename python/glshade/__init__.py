@@ -7,18 +7,23 @@
 (1000, 4)
 """
 
+from ._camera import Camera
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
+from ._render import Image, render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 
 __all__ = [
+    "Camera",
+    "Image",
     "Light",
     "Lights",
     "Material",
     "Scene",
     "__version__",
     "face_normals",
+    "render",
     "shade",
     "vertex_normals",
 ]

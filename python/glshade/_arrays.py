@@ -49,3 +49,13 @@ def indices(value: ArrayLike, name: str) -> NDArray[np.int64]:
     if a.dtype.kind == "u" and a.size and a.max() > np.iinfo(np.int64).max:
         raise IndexError(f"{name} holds index {a.max()}, beyond any vertex count")
     return np.ascontiguousarray(a, dtype=np.int64)
+
+
+def matrix(value: ArrayLike, name: str) -> NDArray[np.float64]:
+    """A (4, 4) matrix of real numbers as a C-contiguous float64 array."""
+    m = np.asarray(value)
+    if m.dtype.kind not in "fiu":
+        raise TypeError(f"{name} must be real numbers, got dtype {m.dtype}")
+    if m.shape != (4, 4):
+        raise ValueError(f"{name} must have shape (4, 4), got {m.shape}")
+    return np.ascontiguousarray(m, dtype=np.float64)

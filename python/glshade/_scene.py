@@ -449,6 +449,24 @@ class Scene:
     def outputs(self) -> tuple[str, ...]:
         return tuple(_glshade.output_names(self.two_side, self.separate_specular))
 
+    def _native(
+        self,
+    ) -> tuple[
+        Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, bool, bool, str
+    ]:
+        """The scene as the native functions take it: lights, material, back_material,
+        global_ambient, viewer, two_side, separate_specular, specular."""
+        return (
+            self._lights.table,
+            self.material.row,
+            self.back_material.row,
+            self._global_ambient,
+            self._viewer,
+            self.two_side,
+            self.separate_specular,
+            self.specular,
+        )
+
     def __repr__(self) -> str:
         f = Light._format
         return (

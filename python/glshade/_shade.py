@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, float_dtype, rows
+from ._arrays import FloatArray, float_dtype, matrix, rows
 from ._scene import Scene
 
 __all__ = ["shade"]
@@ -96,14 +96,7 @@ def shade(
     if colors is not None:
         c = rows(colors, "colors", dtype, width="3 or 4")
         color_material = color_material or "ambient_and_diffuse"
-    m = None
-    if modelview is not None:
-        m = np.asarray(modelview)
-        if m.dtype.kind not in "fiu":
-            raise TypeError(f"modelview must be real numbers, got dtype {m.dtype}")
-        if m.shape != (4, 4):
-            raise ValueError(f"modelview must have shape (4, 4), got {m.shape}")
-        m = np.ascontiguousarray(m, dtype=np.float64)
+    m = None if modelview is None else matrix(modelview, "modelview")
     if out is not None and not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out)!r}")
     for name, value in (
@@ -115,14 +108,7 @@ def shade(
     result: FloatArray = _glshade.shade(
         p,
         n,
-        scene.lights.table,
-        scene.material.row,
-        scene.back_material.row,
-        scene.global_ambient,
-        scene.viewer,
-        scene.two_side,
-        scene.separate_specular,
-        scene.specular,
+        *scene._native(),
         m,
         bool(normalize),
         bool(rescale_normal),
