@@ -22,11 +22,17 @@ Shading = Literal["flat", "gouraud", "phong"]
 Cull = Literal["back", "front", "front_and_back"]
 
 
+def _image_shaped(a: np.ndarray[Any, Any]) -> bool:
+    return a.ndim == 3 and a.shape[2] == 4 and a.dtype.kind == "f"
+
+
 class Image(np.ndarray[Any, np.dtype[np.floating[Any]]]):
     """An (height, width, 4) RGBA float image, row 0 at the top: a numpy array that also saves
     itself as a PNG and shows itself in notebooks.
 
-    ``np.asarray(image)`` gives the plain array.
+    Slices and arithmetic that keep the (height, width, 4) float shape stay images; everything
+    else (a channel, a comparison, a reduction) is a plain array. ``np.asarray(image)`` gives
+    the plain array.
 
     Examples
     --------
@@ -50,11 +56,24 @@ class Image(np.ndarray[Any, np.dtype[np.floating[Any]]]):
         """
         return write_png(path, np.asarray(self))
 
-    def _repr_png_(self) -> bytes | None:
-        """The PNG that IPython and Jupyter show (None for arrays not shaped like an image)."""
-        if self.ndim != 3 or self.shape[2] != 4 or self.dtype.kind != "f":
-            return None
+    def _repr_png_(self) -> bytes:
+        """The PNG that IPython and Jupyter show."""
         return encode_png(np.asarray(self))
+
+    def __getitem__(self, key: Any) -> Any:  # type: ignore[override]
+        return _plain_unless_image(super().__getitem__(key))
+
+    def __array_wrap__(  # type: ignore[override]
+        self, array: Any, context: Any = None, return_scalar: bool = False
+    ) -> Any:
+        result = _plain_unless_image(super().__array_wrap__(array, context, return_scalar))
+        return result[()] if return_scalar and np.ndim(result) == 0 else result
+
+
+def _plain_unless_image(value: Any) -> Any:
+    if isinstance(value, Image) and not _image_shaped(value):
+        return value.view(np.ndarray)
+    return value
 
 
 def _size(value: int, name: str) -> int:
