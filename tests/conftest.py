@@ -2,6 +2,7 @@
 
 import importlib
 import os
+from typing import NoReturn
 
 import pytest
 from hypothesis import HealthCheck, settings
@@ -10,6 +11,14 @@ settings.register_profile("dev", max_examples=50)
 settings.register_profile("ci", max_examples=200, suppress_health_check=[HealthCheck.too_slow])
 settings.register_profile("thorough", max_examples=5000)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
+
+
+def unavailable(reason: str) -> NoReturn:
+    """A reference the test needs (a library, a GL context) cannot be used: under CI=true the
+    test fails with the reason, elsewhere it is skipped with it."""
+    if os.environ.get("CI"):
+        pytest.fail(f"{reason} (CI=true: references are mandatory)", pytrace=False)
+    pytest.skip(reason)
 
 
 def require(module: str) -> object:
