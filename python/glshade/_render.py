@@ -60,12 +60,10 @@ class Image(np.ndarray[Any, np.dtype[np.floating[Any]]]):
         """The PNG that IPython and Jupyter show."""
         return encode_png(np.asarray(self))
 
-    def __getitem__(self, key: Any) -> Any:  # type: ignore[override]
+    def __getitem__(self, key: Any) -> Any:
         return _plain_unless_image(super().__getitem__(key))
 
-    def __array_wrap__(  # type: ignore[override]
-        self, array: Any, context: Any = None, return_scalar: bool = False
-    ) -> Any:
+    def __array_wrap__(self, array: Any, context: Any = None, return_scalar: bool = False) -> Any:
         result = _plain_unless_image(super().__array_wrap__(array, context, return_scalar))
         return result[()] if return_scalar and np.ndim(result) == 0 else result
 
