@@ -293,3 +293,28 @@ impl<T: Real> Pass<'_, T> {
         Ok(())
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fragments_pick_the_side_and_sum_the_specular() {
+        let colours = [
+            [0.5, 0.25, 0.0, 0.5],
+            [0.75, 0.0, 0.5, 1.0],
+            [0.1, 0.2, 0.3, 0.4],
+            [0.0, 0.0, 0.0, 1.0],
+        ];
+        let mut scene = Scene::default();
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[0]);
+        scene.two_side = true;
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[1]);
+        scene.separate_specular = true;
+        assert_eq!(
+            fragment(&scene, true, |k| colours[k]),
+            [1.0, 0.25, 0.5, 0.5]
+        );
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[2]);
+    }
+}

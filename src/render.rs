@@ -258,3 +258,139 @@ pub fn render<T: Real>(
         pass.phong(normals, image)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::Material;
+
+    fn emission_scene() -> Scene {
+        Scene {
+            material: Material {
+                ambient: [0.0; 4],
+                diffuse: [0.0, 0.0, 0.0, 1.0],
+                emission: [0.25, 0.5, 0.75, 1.0],
+                ..Material::default()
+            },
+            global_ambient: [0.0; 4],
+            ..Scene::default()
+        }
+    }
+
+    /// A square of side 2 at depth `z`, in two triangles.
+    const QUAD: [[f64; 3]; 4] = [
+        [-1.0, -1.0, 0.2],
+        [1.0, -1.0, 0.2],
+        [1.0, 1.0, 0.2],
+        [-1.0, 1.0, 0.2],
+    ];
+    const QUAD_FACES: [[i64; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
+
+    fn draw(mesh: &Mesh<'_, f64>, options: &RenderOptions) -> Result<(Vec<f64>, Vec<f64>), Error> {
+        let Viewport { width, height } = options.viewport;
+        let mut image = vec![0.0; width * height * 4];
+        let mut depth = vec![0.0; width * height];
+        render(
+            &emission_scene(),
+            mesh,
+            &Camera::default(),
+            options,
+            &mut image,
+            &mut depth,
+        )?;
+        Ok((image, depth))
+    }
+
+    fn quad() -> Mesh<'static, f64> {
+        Mesh {
+            vertices: &QUAD,
+            faces: &QUAD_FACES,
+            normals: None,
+            colors: None,
+        }
+    }
+
+    #[test]
+    fn a_screen_filling_quad_covers_every_pixel() {
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let options = RenderOptions {
+                viewport: Viewport {
+                    width: 7,
+                    height: 5,
+                },
+                shading,
+                ..RenderOptions::default()
+            };
+            let (image, depth) = draw(&quad(), &options).unwrap();
+            let expected = [0.25, 0.5, 0.75, 1.0];
+            let close = |p: &[f64]| p.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-15);
+            assert!(image.chunks(4).all(close), "{shading:?}");
+            assert!(depth.iter().all(|&z| (z - 0.6).abs() < 1e-15));
+        }
+    }
+
+    #[test]
+    fn bad_arguments_are_rejected_before_any_work() {
+        let mut options = RenderOptions::default();
+        options.viewport.width = 0;
+        assert!(draw(&quad(), &options)
+            .unwrap_err()
+            .message
+            .starts_with("width"));
+        let faces = [[0, 1, 4]];
+        let mesh = Mesh {
+            faces: &faces,
+            ..quad()
+        };
+        let err = draw(&mesh, &RenderOptions::default()).unwrap_err();
+        assert_eq!(err.kind, crate::error::ErrorKind::Index);
+        let normals = [[0.0, 0.0, 1.0]; 4];
+        let mesh = Mesh {
+            normals: Some(&normals),
+            ..quad()
+        };
+        let flat = RenderOptions {
+            shading: Shading::Flat,
+            ..RenderOptions::default()
+        };
+        assert!(draw(&mesh, &flat)
+            .unwrap_err()
+            .message
+            .contains("one per face"));
+    }
+
+    #[test]
+    fn results_do_not_depend_on_the_thread_count() {
+        // A fan of thin triangles through the near and far planes and past the guard band.
+        let vertices: Vec<[f64; 3]> = (0..200)
+            .map(|i| {
+                let t = f64::from(i) * 0.37;
+                [3.0 * t.sin(), 2.0 * t.cos(), 1.5 * (t * 0.5).sin()]
+            })
+            .collect();
+        let faces: Vec<[i64; 3]> = (0..198).map(|i| [0, i + 1, i + 2]).collect();
+        let mesh = Mesh {
+            vertices: &vertices,
+            faces: &faces,
+            normals: None,
+            colors: None,
+        };
+        let options = RenderOptions {
+            viewport: Viewport {
+                width: 90,
+                height: 70,
+            },
+            ..RenderOptions::default()
+        };
+        let run = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            pool.install(|| draw(&mesh, &options).unwrap())
+        };
+        let (one, three) = (run(1), run(3));
+        assert!(one.1.iter().any(|&z| z < 1.0));
+        assert_eq!(one, three);
+    }
+}
