@@ -47,9 +47,10 @@ impl Triangles {
     }
 }
 
-/// Image rows per parallel task: a 1024-row image gives 64 tasks, enough to balance two to
-/// sixteen threads over uneven rows.
-pub const BAND_ROWS: usize = 16;
+/// Image rows per parallel task: a 1024-row image gives 32 tasks, enough to balance uneven rows
+/// over up to 16 threads, while few triangles straddle two bands (each band sets up the rows of
+/// its triangles again; 16 rows measured 15% slower on a 100,000-triangle torus).
+pub const BAND_ROWS: usize = 32;
 
 /// The GL window row of image row `row`, and back (image rows run top-down, window rows
 /// bottom-up).
