@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 import glshade as gs
 from glshade._meshes import icosphere, torus
@@ -145,6 +147,82 @@ def test_coverage_matches_the_pixel_centre_test() -> None:
     unsure = (np.abs(bary) <= 1e-9).any(axis=-1)
     covered = image[..., 3] > 0
     np.testing.assert_array_equal(covered[~unsure], inside[~unsure])
+
+
+@given(
+    st.lists(st.floats(-3, 3), min_size=9, max_size=9),
+    st.integers(1, 40),
+    st.integers(1, 40),
+)
+def test_random_triangles_cover_the_centres_inside_and_between_the_clip_planes(
+    coordinates: list[float], width: int, height: int
+) -> None:
+    # Identity camera: the visible volume is [-1, 1]^3, so z beyond +-1 is clipped away.
+    v = np.array(coordinates).reshape(3, 3)
+    image, depth = gs.render(
+        v,
+        [[0, 1, 2]],
+        emission_scene((1, 1, 1)),
+        gs.Camera(),
+        width=width,
+        height=height,
+        depth=True,
+    )
+    covered = depth < 1
+    assert (image[covered][:, 3] == 1).all() and (image[~covered] == 0).all()
+    origin, direction = eye_rays(gs.Camera(), width, height)
+    with np.errstate(all="ignore"):
+        t, bary = hit(v, origin, direction)
+        z = (origin + t[..., None] * direction)[..., 2]
+        margin = 1e-6 * max(1.0, float(np.abs(v).max()))
+        (x1, y1), (x2, y2) = v[1, :2] - v[0, :2], v[2, :2] - v[0, :2]
+        area = abs(x1 * y2 - x2 * y1)
+    if not area > 1e-6:  # edge-on or degenerate: no interior to compare
+        return
+    # Vertices snap to 1/256 pixel, so centres that close to an edge may go either way.
+    window = (v[:, :2] + 1) / 2 * (width, height)
+    cx, cy = np.meshgrid(np.arange(width) + 0.5, np.arange(height)[::-1] + 0.5)
+    near_edge = np.zeros((height, width), bool)
+    for a, b in ((0, 1), (1, 2), (2, 0)):
+        d = window[b] - window[a]
+        distance = (d[0] * (cy - window[a, 1]) - d[1] * (cx - window[a, 0])) / np.hypot(*d)
+        near_edge |= np.abs(distance) < 1 / 128
+    # The same for the edges the near and far planes cut: z changes by |grad z| per pixel.
+    e1, e2 = window[1] - window[0], window[2] - window[0]
+    dz1, dz2 = v[1, 2] - v[0, 2], v[2, 2] - v[0, 2]
+    det = e1[0] * e2[1] - e2[0] * e1[1]
+    slope = np.hypot(dz1 * e2[1] - dz2 * e1[1], dz2 * e1[0] - dz1 * e2[0]) / abs(det)
+    margin += slope / 128
+    inside = (bary > 0).all(axis=-1) & (np.abs(z) < 1 - margin) & ~near_edge
+    outside = ((bary < 0).any(axis=-1) & ~near_edge) | (np.abs(z) > 1 + margin)
+    assert covered[inside].all() and not covered[outside].any()
+    np.testing.assert_allclose(depth[inside], (z[inside] + 1) / 2, atol=1e-9)
+
+
+@pytest.mark.parametrize("scale", [1e-30, 1e30, 1e300])
+def test_extreme_coordinates_do_not_crash(scale: float) -> None:
+    # Given normals: gs.vertex_normals itself overflows for 1e30 in float32 (its cross product).
+    v = np.array([[-1, -1, 0.5], [1, -1, -0.5], [0, 1, 0.0]]) * scale
+    n = np.array([[0, 0, 1.0]] * 3)
+    for dtype in (np.float32, np.float64):
+        with np.errstate(over="ignore"):
+            v_ = v.astype(dtype)
+        for shading in ("phong", "gouraud"):
+            image = gs.render(
+                v_, [[0, 1, 2]], SHINY, gs.Camera(), width=9, height=7, shading=shading, normals=n
+            )
+            assert image.shape == (7, 9, 4)
+            assert np.isfinite(image).all()
+
+
+def test_render_releases_the_gil() -> None:
+    from test_api import _count_while
+
+    v, f = torus(250, 200)
+    camera = gs.Camera.look_at((0, -2.5, 2), (0, 0, 0), (0, 0, 1))
+    free = _count_while(lambda: __import__("time").sleep(0.3))
+    during = _count_while(lambda: gs.render(v, f, SHINY, camera, width=1024, height=1024))
+    assert during > 0.15 * free, f"counter ran at {during / free:.3f} of its free rate"
 
 
 # --- depth ---------------------------------------------------------------------------------
