@@ -60,8 +60,10 @@ SHADING_MODES = {"phong": 0, "gouraud": 1, "flat": 2}
 _failures: dict[str, str] = {}
 
 
-def _once(what: str, make: Any) -> Any:
-    """make(), remembering a failure so that every later test reports it without retrying."""
+def gl_resource(what: str, make: Any) -> Any:
+    """make() (a context, a renderer): on any error the calling test fails under CI=true and
+    is skipped elsewhere, naming `what`; a failure is remembered, so later tests report it
+    without retrying."""
     if what in _failures:
         unavailable(_failures[what])
     try:
@@ -84,7 +86,7 @@ def _moderngl() -> Any:
 
 def moderngl_context() -> Any:
     """The session's standalone EGL moderngl context (GL >= 4.3 core, llvmpipe), made current."""
-    ctx = _once("moderngl EGL context (require=430)", _moderngl)
+    ctx = gl_resource("moderngl EGL context (require=430)", _moderngl)
     ctx.__enter__()  # make it current: another context (pyrender, PyOpenGL) may have been
     return ctx
 
@@ -173,7 +175,7 @@ def _compat() -> CompatContext:
 
 def compat_context() -> CompatContext:
     """The session's EGL compatibility-profile context (fixed-function GL), made current."""
-    compat: CompatContext = _once("EGL OpenGL compatibility-profile context", _compat)
+    compat: CompatContext = gl_resource("EGL OpenGL compatibility-profile context", _compat)
     compat.make_current()
     return compat
 
@@ -403,7 +405,7 @@ def set_uniforms_gl(program: int, uniforms: dict[str, UniformValue]) -> None:
             setters[u.glsl_type](location, count, value)
 
 
-def glsl_source(version: int, *parts: str, max_lights: int = 8, **defines: int) -> str:
+def glsl_source(version: int | str, *parts: str, max_lights: int = 8, **defines: int) -> str:
     """``#version``, FF_MAX_LIGHTS and `defines`, ``ff_lighting.glsl``, then `parts` (file names
     under ``glsl/``)."""
     head = [f"#version {version}", f"#define FF_MAX_LIGHTS {max_lights}"]
@@ -490,6 +492,35 @@ def float32_tolerance(
     )
     comparable = (reference.margin > margin) & (largest_power < np.finfo(np.float32).max / 64)
     return Float32Tolerance(bound, comparable, reference)
+
+
+def assert_agree(
+    tolerance: Float32Tolerance,
+    ours: np.ndarray,
+    theirs: np.ndarray,
+    compared: np.ndarray,
+    peer: str,
+    context: object = "",
+) -> int:
+    """Fails the test at the worst of the `compared` rows where glshade's colours `ours` and a
+    peer's `theirs` ((n, 4) or (k, n, 4) alike) differ by more than ``tolerance.bound`` in any
+    channel of any output; returns the number of rows compared."""
+    n = len(compared)
+    a, b = ours.reshape(-1, n, 4).astype(np.float64), theirs.reshape(-1, n, 4)
+    assert a.shape == b.shape, (a.shape, b.shape)
+    assert np.isfinite(b[:, compared]).all(), f"{peer} gave a colour for every compared row"
+    err = np.abs(a - b).max(axis=(0, 2))
+    bad = np.flatnonzero(compared & (err > tolerance.bound))
+    if bad.size:
+        i = bad[np.argmax(err[bad] / tolerance.bound[bad])]
+        spec = [out[i] for out in tolerance.reference.outputs]
+        import pytest
+
+        pytest.fail(
+            f"row {i}: |glshade - {peer}| = {err[i]:.3g} > {tolerance.bound[i]:.3g}\n"
+            f"glshade {a[:, i]}\n{peer:7} {b[:, i]}\nspec    {spec}\n{context}"
+        )
+    return int(compared.sum())
 
 
 # ---------------------------------------------------------------------------------------------
