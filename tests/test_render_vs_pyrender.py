@@ -11,13 +11,14 @@ compares window depths.
 
 from __future__ import annotations
 
+import functools
 from typing import Any
 
 import numpy as np
 import pytest
-from conftest import require, unavailable
+from conftest import require
 
-import glpeers  # noqa: F401  (sets PYOPENGL_PLATFORM=egl before OpenGL is imported)
+import glpeers  # first: it sets PYOPENGL_PLATFORM=egl before OpenGL is imported
 import glshade as gs
 from glshade._meshes import icosphere, torus
 
@@ -37,6 +38,16 @@ def pyrender_module() -> Any:
     return require("pyrender")
 
 
+@functools.cache
+def offscreen_renderer(width: int, height: int) -> Any:
+    """One pyrender renderer per size for the session, never deleted: pyrender's delete()
+    calls eglTerminate on the EGL display it shares with moderngl's context."""
+    pyrender = pyrender_module()
+    return glpeers.gl_resource(
+        "pyrender OffscreenRenderer (EGL)", lambda: pyrender.OffscreenRenderer(width, height)
+    )
+
+
 def pyrender_depth(
     mesh: tuple[np.ndarray, np.ndarray], camera: Any, pose: np.ndarray, size: tuple[int, int]
 ) -> np.ndarray:
@@ -45,14 +56,9 @@ def pyrender_depth(
     scene = pyrender.Scene()
     scene.add(pyrender.Mesh.from_trimesh(trimesh.Trimesh(*mesh, process=False), smooth=False))
     scene.add(camera, pose=pose)
-    try:
-        renderer = pyrender.OffscreenRenderer(*size)
-    except Exception as error:  # no EGL device: fatal under CI, a skip elsewhere
-        unavailable(f"pyrender cannot create an offscreen EGL context: {error}")
-    try:
-        depth: np.ndarray = renderer.render(scene, flags=pyrender.RenderFlags.DEPTH_ONLY)
-    finally:
-        renderer.delete()
+    depth: np.ndarray = offscreen_renderer(*size).render(
+        scene, flags=pyrender.RenderFlags.DEPTH_ONLY
+    )
     return depth
 
 
