@@ -86,6 +86,7 @@ def test_bench_render_runs_beside_llvmpipe() -> None:
     args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2"]
     run = subprocess.run(
         [sys.executable, "-m", "glshade", *args],
+        cwd=Path(__file__).resolve().parent.parent,  # the checkout: tests/glpeers.py
         capture_output=True,
         text=True,
         check=True,

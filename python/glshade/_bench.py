@@ -119,16 +119,19 @@ def bench_normals(faces: int, repeat: int) -> int:
 
 
 def _glpeers() -> Any:
-    """The tests' GL helpers (``tests/glpeers.py`` of a source checkout: moderngl on Mesa's
-    llvmpipe and the GLSL port of the lighting equation), or None with the reason printed."""
+    """The tests' GL helpers (``tests/glpeers.py`` of a source checkout, found beside the package
+    or in the working directory: moderngl on Mesa's llvmpipe and the GLSL port of the lighting
+    equation), or None with the reason printed."""
     try:
         import moderngl  # noqa: F401
     except ImportError:
         print("moderngl is not installed (pip install moderngl): no llvmpipe baseline")
         return None
-    tests = Path(__file__).resolve().parents[2] / "tests"
-    if not (tests / "glpeers.py").is_file():
-        print(f"no tests/glpeers.py beside the package ({tests}): run from a source checkout")
+    # The checkout holding the package (an editable install), else the working directory.
+    places = [Path(__file__).resolve().parents[2] / "tests", Path.cwd() / "tests"]
+    tests = next((p for p in places if (p / "glpeers.py").is_file()), None)
+    if tests is None:
+        print("no tests/glpeers.py here or beside the package: run from a source checkout")
         return None
     sys.path.insert(0, str(tests))
     return importlib.import_module("glpeers")
