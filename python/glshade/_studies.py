@@ -4,8 +4,6 @@ shading, and what each costs, as a sphere is tessellated more finely."""
 from __future__ import annotations
 
 import functools
-import statistics
-import time
 from collections.abc import Iterable
 from typing import Any
 
@@ -13,21 +11,13 @@ import numpy as np
 
 import glshade as gs
 
+from ._demo import median_seconds
 from ._meshes import icosphere
 
 
 def _levels8(c: Any) -> Any:
     """The 8-bit values of colours in [0, 1], as a PNG stores them."""
     return np.round(np.clip(c, 0, 1) * 255)
-
-
-def _median_ms(call: Any, repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times) * 1e3
 
 
 def gouraud_vs_phong(
@@ -86,7 +76,7 @@ def gouraud_vs_phong(
                 depth=True,
             )
             images[shading] = render()
-            times[shading] = _median_ms(render, repeat)
+            times[shading] = median_seconds(render, repeat) * 1e3
         (gouraud, gouraud_depth), (phong, phong_depth) = images["gouraud"], images["phong"]
         both = (gouraud_depth < 1) & (phong_depth < 1)
         g, p = np.asarray(gouraud)[both][:, :3], np.asarray(phong)[both][:, :3]
