@@ -130,6 +130,27 @@ def render(
     background: ArrayLike = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | None,
+    scene: Scene,
+    camera: Camera,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: ArrayLike | None = ...,
+    color_material: ColorMaterialMode | None = ...,
+    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    depth: bool,
+) -> Image | tuple[Image, FloatArray]: ...
 def render(
     vertices: Any,
     faces: ArrayLike | None,
