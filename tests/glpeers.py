@@ -206,6 +206,10 @@ def load_fixed_function(
     viewer = tuple(float(x) for x in scene.viewer)
     if viewer not in ((0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0)):
         raise ValueError(f"GL's viewer is (0, 0, 1, 0) or (0, 0, 0, 1), got {viewer}")
+    exponents = [scene.material.shininess, scene.back_material.shininess]
+    exponents += [float(e) for e in np.atleast_1d(lights.spot_exponent)]
+    if max(exponents) > 128:  # glMaterial/glLight would raise GL_INVALID_VALUE
+        raise ValueError(f"GL's shininess and spot exponents are at most 128, got {max(exponents)}")
 
     GL.glMatrixMode(GL.GL_MODELVIEW)
     GL.glLoadIdentity()
