@@ -1,4 +1,4 @@
-//! Triangle setup and rasterisation (GL 2.1 §2.11, §3.5–3.6), with llvmpipe's choices where GL
+//! Triangle setup and rasterisation (GL 2.1 §2.11.1, §3.5.1), with llvmpipe's choices where GL
 //! leaves one: vertices snapped to 1/256 pixel, pixel centres at half-integers, and a pixel
 //! centre exactly on an edge covered by the triangle on its left or below it (Mesa's rule for
 //! framebuffer objects; D3D's top-left rule in GL's bottom-up row order), so a pixel on an edge
@@ -10,7 +10,7 @@
 //! its window-space area is positive (counter-clockwise, `glFrontFace(GL_CCW)`).
 //!
 //! Coverage is decided in exact integer arithmetic on the snapped vertices; attributes are
-//! interpolated from the unsnapped ones, perspective-correctly (§3.5.1 eq. 3.9): the
+//! interpolated from the unsnapped ones, perspective-correctly (§3.5.1): the
 //! barycentric coordinates in the original triangle divided by w are affine in window space.
 
 use glam::{DVec2, DVec3, DVec4};

@@ -1,4 +1,4 @@
-//! Rendering a triangle mesh with flat, Gouraud or Phong shading: GL's pipeline (§2.11–§3.6)
+//! Rendering a triangle mesh with flat, Gouraud or Phong shading: GL 2.1's pipeline (§2.11–3.5)
 //! around the one lighting equation. Vertices go to clip coordinates, faces are clipped
 //! ([`crate::clip`]) and set up ([`crate::raster`]), the nearest triangle is found at every
 //! pixel ([`crate::visibility`]), and the visible pixels are lit ([`crate::passes`]).
