@@ -42,21 +42,37 @@ fn finite(name: &str, values: &[f64]) -> Result<(), Error> {
 }
 
 impl Camera {
-    /// Checks that both matrices are finite and the view is affine.
+    /// Checks that the projection is finite and the view an invertible affine transform.
     ///
     /// # Errors
     /// A value error naming `view` or `projection`.
     pub fn validate(&self) -> Result<(), Error> {
-        finite("view", &self.view.to_cols_array())?;
-        finite("projection", &self.projection.to_cols_array())?;
-        let last_row = self.view.row(3);
-        if last_row != DVec4::W {
-            return Err(Error::value(format!(
-                "view must be affine (last row (0, 0, 0, 1)), got last row {last_row}"
-            )));
-        }
-        Ok(())
+        check_affine(&self.view, "view")?;
+        finite("projection", &self.projection.to_cols_array())
     }
+}
+
+/// Checks that `m` transforms points as GL's modelview must: finite, affine (last row
+/// (0, 0, 0, 1)) and invertible, since normals go through its inverse transpose.
+///
+/// # Errors
+/// A value error naming `name`.
+pub fn check_affine(m: &DMat4, name: &str) -> Result<(), Error> {
+    finite(name, &m.to_cols_array())?;
+    let last_row = m.row(3);
+    if last_row != DVec4::W {
+        return Err(Error::value(format!(
+            "{name} must be affine (last row (0, 0, 0, 1)), got last row {last_row}"
+        )));
+    }
+    let determinant = glam::DMat3::from_mat4(*m).determinant();
+    if determinant == 0.0 || !determinant.is_finite() {
+        return Err(Error::value(format!(
+            "{name} must be invertible (normals go through its inverse transpose), got \
+             determinant {determinant} for the upper-left 3x3"
+        )));
+    }
+    Ok(())
 }
 
 /// `gluLookAt`: the view of a camera at `eye` looking at `target`, with `up` projecting to +y.
@@ -197,11 +213,17 @@ mod tests {
     }
 
     #[test]
-    fn the_view_must_be_affine_and_finite() {
+    fn the_view_must_be_affine_invertible_and_finite() {
         let mut camera = Camera::default();
         assert!(camera.validate().is_ok());
         camera.view.w_axis.w = 2.0;
         assert!(camera.validate().unwrap_err().message.starts_with("view"));
+        camera.view = DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0));
+        assert!(camera
+            .validate()
+            .unwrap_err()
+            .message
+            .contains("invertible"));
         camera = Camera::default();
         camera.projection.x_axis.x = f64::INFINITY;
         assert!(camera

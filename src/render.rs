@@ -6,7 +6,7 @@
 use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
-use crate::camera::Camera;
+use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::error::Error;
 use crate::material::ColorMaterial;
@@ -125,12 +125,7 @@ fn validate<T: Real>(
         )));
     }
     camera.validate()?;
-    let model = options.model;
-    if !model.is_finite() || model.row(3) != DVec4::W {
-        return Err(Error::value(format!(
-            "model must be finite and affine (last row (0, 0, 0, 1)), got {model}"
-        )));
-    }
+    check_affine(&options.model, "model")?;
     if !options.background.iter().all(|c| c.is_finite()) {
         return Err(Error::value(format!(
             "background must be finite, got {:?}",

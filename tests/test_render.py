@@ -506,9 +506,10 @@ TRI = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
         ({"colors": np.zeros((3, 5))}, ValueError, "colors must have shape"),
         ({"colors": np.zeros((4, 3))}, ValueError, "colors must have one row per vertex"),
         ({"background": (1, 2)}, ValueError, "background must have shape"),
-        ({"model": np.ones((4, 4))}, ValueError, "model must be finite and affine"),
+        ({"model": np.ones((4, 4))}, ValueError, "model must be affine"),
+        ({"model": np.full((4, 4), np.nan)}, ValueError, "model must be finite"),
         ({"model": np.eye(3)}, ValueError, r"model must have shape \(4, 4\)"),
-        ({"model": np.diag([1, 1, 0, 1.0])}, ValueError, "must be invertible"),
+        ({"model": np.diag([1, 1, 0, 1.0])}, ValueError, "model must be invertible"),
         ({"color_material": "diffuse"}, ValueError, "color_material needs colors"),
     ],
 )
