@@ -7,6 +7,8 @@
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
 //! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
 
+pub mod camera;
+pub mod clip;
 pub mod dispatch;
 pub mod elementary;
 pub mod error;
@@ -15,18 +17,25 @@ pub mod lanes;
 pub mod light;
 pub mod material;
 pub mod normals;
+pub mod passes;
 pub mod plan;
 pub mod prepare;
+pub mod raster;
 pub mod real;
+pub mod render;
 pub mod scene;
 pub mod shade;
+pub mod visibility;
 
+pub use camera::Camera;
 pub use error::{Error, ErrorKind};
 pub use light::Light;
 pub use material::{ColorMaterial, ColorMaterialMode, Face, Material};
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use plan::Plan;
 pub use prepare::{Accuracy, ShadeOptions};
+pub use raster::{Cull, Viewport};
+pub use render::{render, Mesh, RenderOptions, Shading};
 pub use scene::{Scene, Specular};
 pub use shade::{describe, shade, VertexColors};
 

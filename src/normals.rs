@@ -91,7 +91,7 @@ fn check_rows<R>(out: &[R], rows: usize) -> Result<(), Error> {
 /// A vertex index that [`check_faces`] has proven to be in `0..vertex_count`.
 #[inline]
 #[allow(clippy::cast_sign_loss)]
-fn index(v: i64) -> usize {
+pub(crate) fn index(v: i64) -> usize {
     v as usize
 }
 

@@ -1,4 +1,5 @@
-"""`python -m glshade demo` runs, prints what it computed, and writes a valid PNG."""
+"""`python -m glshade demo` runs, prints what it computed, and writes valid PNGs; the benchmarks
+run beside their baselines."""
 
 from __future__ import annotations
 
@@ -34,10 +35,18 @@ def test_demo_runs_and_writes_the_image(tmp_path: Path) -> None:
         check=True,
     )
     assert "Mvertices/s" in run.stdout and "float32" in run.stdout and "float64" in run.stdout
-    assert f"wrote {output}" in run.stdout
     max_diff = float(run.stdout.split("max |float32 - float64|")[1].split(":")[1].split()[0])
     assert max_diff < 1e-5
-    assert output.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    for shading in ("flat", "gouraud", "phong"):
+        assert run.stdout.count(f"\n{shading} ") == 1  # its timing line
+    # Gouraud misses and smears the highlights Phong shading shows on the coarse torus.
+    gouraud_error = float(
+        run.stdout.split("Gouraud against Phong: max |difference|")[1].split(",")[0]
+    )
+    assert 0.05 < gouraud_error < 1
+    for name in ("demo.png", "demo-flat.png", "demo-gouraud.png", "demo-phong.png"):
+        assert f"wrote {tmp_path / name}" in run.stdout
+        assert (tmp_path / name).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
 def test_png_round_trip(tmp_path: Path) -> None:
@@ -68,3 +77,21 @@ def test_bench_normals_runs_beside_trimesh() -> None:
     assert "speed-up over trimesh" in run.stdout
     difference = float(run.stdout.split("angle weighting, float64:")[1].split()[0])
     assert difference < 1e-12
+
+
+def test_bench_render_runs_beside_llvmpipe() -> None:
+    from conftest import require
+
+    require("moderngl")
+    args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2"]
+    run = subprocess.run(
+        [sys.executable, "-m", "glshade", *args],
+        cwd=Path(__file__).resolve().parent.parent,  # the checkout: tests/glpeers.py
+        capture_output=True,
+        text=True,
+        check=True,
+    )
+    for shading in ("flat", "gouraud", "phong"):
+        assert f"glshade {shading}" in run.stdout and f"llvmpipe {shading}" in run.stdout
+        line = run.stdout.split("speed-up")[1].split(f"\n  {shading}")[1].split()
+        assert float(line[0].rstrip("%")) > 99.0, line  # the same picture, pixel for pixel

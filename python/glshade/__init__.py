@@ -9,13 +9,17 @@
 
 from . import presets
 from ._area_lights import disc_light, rectangle_light
+from ._camera import Camera
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
+from ._render import Image, render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 from ._shade_mesh import shade_mesh
 
 __all__ = [
+    "Camera",
+    "Image",
     "Light",
     "Lights",
     "Material",
@@ -25,6 +29,7 @@ __all__ = [
     "face_normals",
     "presets",
     "rectangle_light",
+    "render",
     "shade",
     "shade_mesh",
     "vertex_normals",

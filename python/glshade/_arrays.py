@@ -51,8 +51,8 @@ def indices(value: ArrayLike, name: str) -> NDArray[np.int64]:
     return np.ascontiguousarray(a, dtype=np.int64)
 
 
-def matrix4(value: ArrayLike, name: str) -> NDArray[np.float64]:
-    """A (4, 4) real matrix as C-contiguous float64."""
+def matrix(value: ArrayLike, name: str) -> NDArray[np.float64]:
+    """A (4, 4) matrix of real numbers as a C-contiguous float64 array."""
     m = np.asarray(value)
     if m.dtype.kind not in "fiu":
         raise TypeError(f"{name} must be real numbers, got dtype {m.dtype}")

@@ -6,9 +6,13 @@ run; the machine's other load affects both sides alike.
 
 from __future__ import annotations
 
+import functools
+import importlib
 import statistics
+import sys
 import time
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import numpy as np
@@ -111,4 +115,139 @@ def bench_normals(faces: int, repeat: int) -> int:
     for label, baseline, ours in pairs:
         ratios = [b / o for b, o in zip(times[baseline], times[ours], strict=True)]
         print(f"  {label:42} {statistics.median(ratios):6.1f}x")
+    return 0
+
+
+def _glpeers() -> Any:
+    """The tests' GL helpers (``tests/glpeers.py`` of a source checkout, found beside the package
+    or in the working directory: moderngl on Mesa's llvmpipe and the GLSL port of the lighting
+    equation), or None with the reason printed."""
+    try:
+        import moderngl  # noqa: F401
+    except ImportError:
+        print("moderngl is not installed (pip install moderngl): no llvmpipe baseline")
+        return None
+    # The checkout holding the package (an editable install), else the working directory.
+    places = [Path(__file__).resolve().parents[2] / "tests", Path.cwd() / "tests"]
+    tests = next((p for p in places if (p / "glpeers.py").is_file()), None)
+    if tests is None:
+        print("no tests/glpeers.py here or beside the package: run from a source checkout")
+        return None
+    sys.path.insert(0, str(tests))
+    return importlib.import_module("glpeers")
+
+
+class LlvmpipeRenderer:
+    """The baseline: the same mesh drawn by Mesa's llvmpipe through moderngl, with the GLSL port
+    of the equation (per fragment for Phong, per vertex otherwise) into an RGBA32F target.
+
+    Programs, buffers and the framebuffer are made once; each call uploads the vertices, clears,
+    draws and reads the image back into numpy (row 0 at the top), as `gs.render` returns it.
+    """
+
+    def __init__(
+        self,
+        glpeers: Any,
+        mesh: tuple[NDArray[np.float64], NDArray[np.int64]],
+        shading: str,
+        scene: gs.Scene,
+        camera: gs.Camera,
+        size: int,
+    ) -> None:
+        import moderngl
+
+        self.ctx = glpeers.moderngl_context()
+        v, f = mesh
+        view, normal_matrix = camera.view, np.linalg.inv(camera.view[:3, :3]).T
+        eye = v @ view[:3, :3].T + view[:3, 3]
+        if shading == "flat":
+            normals = np.repeat(gs.face_normals(v, f) @ normal_matrix.T, 3, axis=0)
+            eye, f = eye[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3)
+        else:
+            normals = gs.vertex_normals(v, f) @ normal_matrix.T
+        self.vertices = np.ones((len(eye), 10), np.float32)
+        self.vertices[:, :3], self.vertices[:, 3:6] = eye, normals
+        mode = glpeers.SHADING_MODES[shading]
+        program = self.ctx.program(
+            vertex_shader=glpeers.glsl_source(330, "raster.vert", FF_SHADING=mode),
+            fragment_shader=glpeers.glsl_source(330, "raster.frag", FF_SHADING=mode),
+        )
+        glpeers.set_uniforms(program, glpeers.pack_scene(scene, normalize=True))
+        projection = camera.projection_matrix(size, size)
+        program["ff_projection"].write(projection.T.astype(np.float32).tobytes())
+        self.vbo = self.ctx.buffer(reserve=self.vertices.nbytes)
+        ibo = self.ctx.buffer(np.ascontiguousarray(f, np.uint32).tobytes())
+        self.vao = self.ctx.vertex_array(
+            program,
+            [(self.vbo, "3f 3f 4f", "in_position", "in_normal", "in_color")],
+            index_buffer=ibo,
+            index_element_size=4,
+            skip_errors=True,
+        )
+        self.texture = self.ctx.texture((size, size), 4, dtype="f4")
+        depth = self.ctx.depth_texture((size, size))
+        self.fbo = self.ctx.framebuffer(color_attachments=[self.texture], depth_attachment=depth)
+        self.size = size
+        self.moderngl = moderngl
+
+    def __call__(self) -> NDArray[np.float32]:
+        self.ctx.__enter__()
+        self.vbo.write(self.vertices.tobytes())
+        self.fbo.use()
+        self.ctx.enable_only(self.moderngl.DEPTH_TEST)
+        self.ctx.provoking_vertex = self.moderngl.LAST_VERTEX_CONVENTION
+        self.fbo.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
+        self.vao.render(self.moderngl.TRIANGLES)
+        image = np.frombuffer(self.texture.read(), np.float32)
+        return image.reshape(self.size, self.size, 4)[::-1]
+
+
+def bench_render(faces: int, size: int, repeat: int) -> int:
+    from ._demo import demo_camera, demo_scene
+    from ._meshes import torus
+
+    sides = max(3, round(np.sqrt(faces / 2 / 1.25)))  # 10^5 faces: 250 x 200 exactly
+    rings = max(3, faces // (2 * sides))
+    mesh = torus(rings, sides, 1.0, 0.45)
+    v, f = mesh
+    v32, normals = v.astype(np.float32), gs.vertex_normals(v, f).astype(np.float32)
+    scene, camera = demo_scene(), demo_camera()
+    print(
+        f"a torus of {len(f):,} triangles ({len(v):,} vertices), {size}x{size}, float32; "
+        f"{len(scene.lights)} lights; {repeat} rounds, each method once per round"
+    )
+    glpeers = _glpeers()
+    methods: dict[str, Callable[[], Any]] = {}
+    for shading in ("flat", "gouraud", "phong"):
+        given = gs.face_normals(v32, f) if shading == "flat" else normals
+        methods[f"glshade {shading}"] = functools.partial(
+            gs.render,
+            v32,
+            f,
+            scene,
+            camera,
+            width=size,
+            height=size,
+            shading=shading,
+            normals=given,
+        )
+        if glpeers is not None:
+            methods[f"llvmpipe {shading}"] = LlvmpipeRenderer(
+                glpeers, mesh, shading, scene, camera, size
+            )
+    results = {name: np.asarray(call()) for name, call in methods.items()}
+    times = round_robin(methods, repeat)
+    print(f"\n  {'method':24} {'median':>10}")
+    for name, seconds in times.items():
+        print(f"  {name:24} {statistics.median(seconds) * 1e3:7.1f} ms")
+    if glpeers is None:
+        return 0
+    print("\n  shading   pixels within 1e-4 of llvmpipe   speed-up (median of per-round ratios)")
+    for shading in ("flat", "gouraud", "phong"):
+        ours, theirs = results[f"glshade {shading}"], results[f"llvmpipe {shading}"]
+        both = (ours[..., 3] > 0) & (theirs[..., 3] > 0)
+        agreeing = (np.abs(ours[both] - theirs[both]).max(axis=-1) <= 1e-4).mean()
+        baseline, own = times[f"llvmpipe {shading}"], times[f"glshade {shading}"]
+        ratio = statistics.median(b / o for b, o in zip(baseline, own, strict=True))
+        print(f"  {shading:8} {agreeing:28.3%}   {ratio:10.2f}x")
     return 0

@@ -14,7 +14,11 @@ __all__ = [
     "check_scene",
     "describe",
     "face_normals",
+    "look_at",
+    "orthographic",
     "output_names",
+    "perspective",
+    "render",
     "shade",
     "vertex_normals",
 ]
@@ -82,3 +86,37 @@ def face_normals(
 def vertex_normals(
     vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64], weighting: str
 ) -> NDArray[np.floating[Any]]: ...
+def look_at(
+    eye: NDArray[np.float64], target: NDArray[np.float64], up: NDArray[np.float64]
+) -> NDArray[np.float64]: ...
+def perspective(fovy: float, aspect: float, near: float, far: float) -> NDArray[np.float64]: ...
+def orthographic(
+    left: float, right: float, bottom: float, top: float, near: float, far: float
+) -> NDArray[np.float64]: ...
+def render(
+    vertices: NDArray[np.floating[Any]],
+    faces: NDArray[np.int64],
+    lights: NDArray[np.float64],
+    material: NDArray[np.float64],
+    back_material: NDArray[np.float64],
+    global_ambient: NDArray[np.float64],
+    viewer: NDArray[np.float64],
+    two_side: bool,
+    separate_specular: bool,
+    specular: str,
+    specular_gate: bool,
+    view: NDArray[np.float64],
+    projection: NDArray[np.float64],
+    model: NDArray[np.float64],
+    width: int,
+    height: int,
+    shading: str,
+    normals: NDArray[np.floating[Any]] | None,
+    colors: NDArray[np.floating[Any]] | None,
+    color_material: str | None,
+    color_material_face: str,
+    normalize: bool,
+    rescale_normal: bool,
+    cull: str,
+    background: NDArray[np.float64],
+) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...

@@ -14,7 +14,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import _glshade
-from ._arrays import choice, matrix4, optional_choice
+from ._arrays import choice, matrix, optional_choice
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
 
@@ -461,6 +461,25 @@ class Scene:
     def outputs(self) -> tuple[str, ...]:
         return tuple(_glshade.output_names(self.two_side, self.separate_specular))
 
+    def _native(
+        self,
+    ) -> tuple[
+        Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, bool, bool, str, bool
+    ]:
+        """The scene as the native functions take it: lights, material, back_material,
+        global_ambient, viewer, two_side, separate_specular, specular, specular_gate."""
+        return (
+            self._lights.table,
+            self.material.row,
+            self.back_material.row,
+            self._global_ambient,
+            self._viewer,
+            self.two_side,
+            self.separate_specular,
+            self.specular,
+            self.specular_gate,
+        )
+
     def plan(
         self,
         dtype: Any = np.float32,
@@ -492,16 +511,8 @@ class Scene:
         if name not in ("float16", "float32", "float64"):
             raise TypeError(f"dtype must be float32 or float64, got {name}")
         return _glshade.describe(
-            self._lights.table,
-            self.material.row,
-            self.back_material.row,
-            self._global_ambient,
-            self._viewer,
-            self.two_side,
-            self.separate_specular,
-            self.specular,
-            self.specular_gate,
-            None if modelview is None else matrix4(modelview, "modelview"),
+            *self._native(),
+            None if modelview is None else matrix(modelview, "modelview"),
             bool(normalize),
             bool(rescale_normal),
             optional_choice(color_material, "color_material"),

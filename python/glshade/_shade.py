@@ -8,7 +8,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, choice, float_dtype, matrix4, optional_choice, rows
+from ._arrays import FloatArray, choice, float_dtype, matrix, optional_choice, rows
 from ._scene import Scene
 
 __all__ = ["shade"]
@@ -105,21 +105,13 @@ def shade(
     if colors is not None:
         c = rows(colors, "colors", dtype, width="3 or 4")
         color_material = color_material or "ambient_and_diffuse"
-    m = None if modelview is None else matrix4(modelview, "modelview")
+    m = None if modelview is None else matrix(modelview, "modelview")
     if out is not None and not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out)!r}")
     result: FloatArray = _glshade.shade(
         p,
         n,
-        scene.lights.table,
-        scene.material.row,
-        scene.back_material.row,
-        scene.global_ambient,
-        scene.viewer,
-        scene.two_side,
-        scene.separate_specular,
-        scene.specular,
-        scene.specular_gate,
+        *scene._native(),
         m,
         bool(normalize),
         bool(rescale_normal),

@@ -7,8 +7,8 @@
 #![allow(clippy::fn_params_excessive_bools)]
 
 use numpy::{
-    Element, PyArrayDescrMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
+    Element, PyArrayDescrMethods, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
+    PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -17,8 +17,11 @@ use crate::error::{Error, ErrorKind};
 use crate::light::{Light, LIGHT_ROW_LEN};
 use crate::material::{Material, MATERIAL_ROW_LEN};
 use crate::scene::{Scene, Specular};
+use crate::shade::VertexColors;
 
+mod camera;
 mod normals;
+mod render;
 mod shading;
 
 fn to_pyerr(e: Error) -> PyErr {
@@ -68,6 +71,63 @@ fn vec4(v: &PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<[f64; 4]> {
     v.as_slice()?
         .try_into()
         .map_err(|_| PyValueError::new_err(format!("{name} must have 4 values, got {}", v.len())))
+}
+
+fn vec3(v: &PyReadonlyArray1<'_, f64>, name: &str) -> PyResult<glam::DVec3> {
+    let values: [f64; 3] = v.as_slice()?.try_into().map_err(|_| {
+        PyValueError::new_err(format!("{name} must have 3 values, got {}", v.len()))
+    })?;
+    Ok(glam::DVec3::from_array(values))
+}
+
+/// A row-major (4, 4) array (as numpy prints matrices) as a column-major `DMat4`.
+fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
+    let r = rows::<f64, 4>(m, name)?;
+    let r: &[[f64; 4]; 4] = r.try_into().map_err(|_| {
+        PyValueError::new_err(format!(
+            "{name} must have shape (4, 4), got {:?}",
+            m.shape()
+        ))
+    })?;
+    Ok(glam::DMat4::from_cols_array_2d(r).transpose())
+}
+
+/// A 2-d array of `T`, or a `TypeError` naming `name` and the dtype it should share with `like`.
+fn typed<'py, T: Element>(
+    array: &Bound<'py, PyUntypedArray>,
+    name: &str,
+    like: &str,
+) -> PyResult<PyReadonlyArray2<'py, T>> {
+    let typed = array.cast::<numpy::PyArray2<T>>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{name} must be a 2-d array of {} like {like}, got a {}-d array of {}",
+            numpy::dtype::<T>(array.py()),
+            array.ndim(),
+            array.dtype()
+        ))
+    })?;
+    Ok(typed.readonly())
+}
+
+/// Per-vertex colours of width 3 or 4 for `GL_COLOR_MATERIAL`.
+fn vertex_colors<'a, T: Element>(
+    colors: &'a PyReadonlyArray2<'_, T>,
+    n: usize,
+) -> PyResult<VertexColors<'a, T>> {
+    match colors.shape()[1] {
+        3 => Ok(VertexColors {
+            data: rows::<T, 3>(colors, "colors")?.as_flattened(),
+            width: 3,
+        }),
+        4 => Ok(VertexColors {
+            data: rows::<T, 4>(colors, "colors")?.as_flattened(),
+            width: 4,
+        }),
+        _ => Err(PyValueError::new_err(format!(
+            "colors must have shape ({n}, 3) or ({n}, 4), got {:?}",
+            colors.shape()
+        ))),
+    }
 }
 
 /// The computation type an input array selects.
@@ -170,7 +230,11 @@ fn check_scene(
 #[pymodule(gil_used = false)]
 mod _glshade {
     #[pymodule_export]
+    use super::camera::{look_at, orthographic, perspective};
+    #[pymodule_export]
     use super::normals::{face_normals, vertex_normals};
+    #[pymodule_export]
+    use super::render::render;
     #[pymodule_export]
     use super::shading::{describe, shade};
     #[pymodule_export]

@@ -7,12 +7,11 @@ use numpy::{
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
-use super::{float_of, rows, scene_from, to_pyerr, Float};
+use super::{float_of, matrix, rows, scene_from, to_pyerr, typed, vertex_colors, Float};
 use crate::material::ColorMaterial;
 use crate::prepare::{Accuracy, ShadeOptions};
 use crate::real::Real;
 use crate::scene::Scene;
-use crate::shade::VertexColors;
 
 /// Every argument of `shade` that does not depend on the dtype.
 struct Call {
@@ -28,42 +27,17 @@ fn shade_typed<'py, T: Element + Real>(
     colors: Option<&Bound<'py, PyUntypedArray>>,
     out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let cast = |a: &Bound<'py, PyUntypedArray>, name: &str| -> PyResult<PyReadonlyArray2<'py, T>> {
-        let typed = a.cast::<numpy::PyArray2<T>>().map_err(|_| {
-            PyTypeError::new_err(format!(
-                "{name} must be a 2-d array of {} like positions, got a {}-d array of {}",
-                numpy::dtype::<T>(py),
-                a.ndim(),
-                a.dtype()
-            ))
-        })?;
-        Ok(typed.readonly())
-    };
-    let positions = cast(positions, "positions")?;
-    let normals = cast(normals, "normals")?;
-    let colors = colors.map(|c| cast(c, "colors")).transpose()?;
+    let positions = typed::<T>(positions, "positions", "positions")?;
+    let normals = typed::<T>(normals, "normals", "positions")?;
+    let colors = colors
+        .map(|c| typed::<T>(c, "colors", "positions"))
+        .transpose()?;
     let n = positions.shape()[0];
     let (p, nr) = (
         rows::<T, 3>(&positions, "positions")?,
         rows::<T, 3>(&normals, "normals")?,
     );
-    let vertex_colors = match &colors {
-        Some(c) if c.shape()[1] == 3 => Some(VertexColors {
-            data: rows::<T, 3>(c, "colors")?.as_flattened(),
-            width: 3,
-        }),
-        Some(c) if c.shape()[1] == 4 => Some(VertexColors {
-            data: rows::<T, 4>(c, "colors")?.as_flattened(),
-            width: 4,
-        }),
-        Some(c) => {
-            return Err(PyValueError::new_err(format!(
-                "colors must have shape ({n}, 3) or ({n}, 4), got {:?}",
-                c.shape()
-            )))
-        }
-        None => None,
-    };
+    let vertex_colors = colors.as_ref().map(|c| vertex_colors(c, n)).transpose()?;
     let planes = call.scene.output_count();
     let shape: Vec<usize> = if planes == 1 {
         vec![n, 4]
@@ -110,19 +84,7 @@ fn options_from(
     accuracy: &str,
     strict: bool,
 ) -> PyResult<ShadeOptions> {
-    let modelview = match modelview {
-        Some(m) => {
-            let r = rows::<f64, 4>(m, "modelview")?;
-            if r.len() != 4 {
-                return Err(PyValueError::new_err(format!(
-                    "modelview must have shape (4, 4), got {:?}",
-                    m.shape()
-                )));
-            }
-            Some(glam::DMat4::from_cols_array_2d(&[r[0], r[1], r[2], r[3]]).transpose())
-        }
-        None => None,
-    };
+    let modelview = modelview.map(|m| matrix(m, "modelview")).transpose()?;
     let color_material = color_material
         .map(|mode| ColorMaterial::parse(mode, color_material_face))
         .transpose()

@@ -1,0 +1,178 @@
+"""`Camera`: GL's view and projection matrices, explicit or built like gluLookAt, gluPerspective
+and glOrtho."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+from . import _glshade
+from ._arrays import matrix
+
+__all__ = ["Camera"]
+
+Float64Array = NDArray[np.float64]
+
+
+def _matrix(value: ArrayLike | None, name: str) -> Float64Array:
+    """A (4, 4) float64 matrix (identity for None), finite, as a read-only copy."""
+    m = np.eye(4) if value is None else matrix(value, name).copy()
+    if not np.isfinite(m).all():
+        raise ValueError(f"{name} must be finite, got {m.tolist()}")
+    m.flags.writeable = False
+    return m
+
+
+def _point(value: ArrayLike, name: str) -> Float64Array:
+    p = np.asarray(value)
+    if p.dtype.kind not in "fiu":
+        raise TypeError(f"{name} must be real numbers, got dtype {p.dtype}")
+    if p.shape != (3,):
+        raise ValueError(f"{name} must have shape (3,), got {p.shape}")
+    return np.ascontiguousarray(p, dtype=np.float64)
+
+
+class Camera:
+    """Where the mesh is seen from and how it is projected: GL's view and projection matrices.
+
+    Matrices are row-major (4, 4) arrays, as numpy prints them (the transpose of what
+    ``glLoadMatrixd`` reads). A point p of the mesh reaches clip coordinates as
+    ``projection @ view @ model @ (p, 1)``. The view takes world to eye coordinates, where the
+    camera sits at the origin looking down -z with +y up, and where a `Scene`'s lights and viewer
+    are given (as for `shade`).
+
+    Parameters
+    ----------
+    view : (4, 4) float, optional
+        World to eye coordinates; affine (last row (0, 0, 0, 1)) and invertible. Default: the
+        identity (GL's initial modelview).
+    projection : (4, 4) float, optional
+        Eye to clip coordinates. Default: the identity (GL's initial projection: the cube
+        [-1, 1]^3 of eye coordinates, seen orthographically along -z).
+
+    Examples
+    --------
+    >>> import glshade as gs
+    >>> camera = gs.Camera.look_at(eye=(0, 0, 5), target=(0, 0, 0), fovy=30)
+    >>> camera.projection_matrix(640, 480).shape
+    (4, 4)
+    """
+
+    def __init__(self, view: ArrayLike | None = None, projection: ArrayLike | None = None) -> None:
+        self._view = _matrix(view, "view")
+        fixed = _matrix(projection, "projection")
+        self._projection: Callable[[float], Float64Array] = lambda aspect: fixed
+        self._description = "projection=..."
+
+    @classmethod
+    def _built(
+        cls, view: Float64Array, projection: Callable[[float], Float64Array], description: str
+    ) -> Camera:
+        camera = cls(view)
+        projection(1.0)  # checks the parameters now rather than at the first render
+        camera._projection = projection
+        camera._description = description
+        return camera
+
+    @classmethod
+    def look_at(
+        cls,
+        eye: ArrayLike,
+        target: ArrayLike = (0.0, 0.0, 0.0),
+        up: ArrayLike = (0.0, 1.0, 0.0),
+        *,
+        fovy: float = 45.0,
+        aspect: float | None = None,
+        near: float = 0.1,
+        far: float = 100.0,
+    ) -> Camera:
+        """A perspective camera at `eye` looking at `target` (gluLookAt + gluPerspective).
+
+        Parameters
+        ----------
+        eye, target : (3,) float
+            The camera's position and the point it looks at, in world coordinates.
+        up : (3,) float
+            The world direction that appears upwards (any length, not parallel to the view).
+        fovy : float
+            The vertical field of view in degrees, in (0, 180).
+        aspect : float, optional
+            Width / height of the view; None (the default) takes the image's at render time.
+        near, far : float
+            Distances to the near and far clip planes, 0 < near < far.
+
+        Returns
+        -------
+        Camera
+
+        Raises
+        ------
+        ValueError
+            For ``eye == target``, `up` parallel to the view, or out-of-range parameters.
+        """
+        view = _glshade.look_at(_point(eye, "eye"), _point(target, "target"), _point(up, "up"))
+        f, n, z = float(fovy), float(near), float(far)
+        return cls._built(
+            view,
+            lambda a: _glshade.perspective(f, a if aspect is None else float(aspect), n, z),
+            f"look_at(fovy={f:g}, aspect={aspect}, near={n:g}, far={z:g})",
+        )
+
+    @classmethod
+    def look_at_orthographic(
+        cls,
+        eye: ArrayLike,
+        target: ArrayLike = (0.0, 0.0, 0.0),
+        up: ArrayLike = (0.0, 1.0, 0.0),
+        *,
+        height: float = 2.0,
+        aspect: float | None = None,
+        near: float = 0.1,
+        far: float = 100.0,
+    ) -> Camera:
+        """An orthographic camera at `eye` looking at `target` (gluLookAt + glOrtho).
+
+        Parameters
+        ----------
+        eye, target, up : (3,) float
+            As for `look_at`.
+        height : float
+            The height of the visible box in world units; its width is ``height * aspect``,
+            centred on the view axis.
+        aspect : float, optional
+            Width / height of the view; None (the default) takes the image's at render time.
+        near, far : float
+            Distances along the view direction to the near and far clip planes (``near != far``;
+            negative values are behind the eye, as in glOrtho).
+
+        Returns
+        -------
+        Camera
+        """
+        view = _glshade.look_at(_point(eye, "eye"), _point(target, "target"), _point(up, "up"))
+        h, n, z = float(height), float(near), float(far)
+
+        def projection(a: float) -> Float64Array:
+            half_width = 0.5 * h * (a if aspect is None else float(aspect))
+            return _glshade.orthographic(-half_width, half_width, -0.5 * h, 0.5 * h, n, z)
+
+        return cls._built(
+            view,
+            projection,
+            f"look_at_orthographic(height={h:g}, aspect={aspect}, near={n:g}, far={z:g})",
+        )
+
+    @property
+    def view(self) -> Float64Array:
+        """(4, 4) float64: world to eye coordinates."""
+        return self._view
+
+    def projection_matrix(self, width: int, height: int) -> Float64Array:
+        """The (4, 4) float64 projection for an image of `width` x `height` pixels (which sets
+        the aspect ratio of a camera built without one)."""
+        return self._projection(width / height)
+
+    def __repr__(self) -> str:
+        return f"Camera({self._description}, view={self._view.tolist()})"

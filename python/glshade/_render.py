@@ -1,0 +1,281 @@
+"""`render`: a triangle mesh as an image, with flat, Gouraud or Phong shading."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, Literal, overload
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from . import _glshade
+from ._arrays import FloatArray, rows
+from ._camera import Camera, _matrix
+from ._normals import _mesh
+from ._png import encode_png, write_png
+from ._scene import Scene, _rgba
+from ._shade import ColorMaterialMode
+
+__all__ = ["Image", "render"]
+
+Shading = Literal["flat", "gouraud", "phong"]
+Cull = Literal["back", "front", "front_and_back"]
+
+
+def _image_shaped(a: np.ndarray[Any, Any]) -> bool:
+    return a.ndim == 3 and a.shape[2] == 4 and a.dtype.kind == "f"
+
+
+class Image(np.ndarray[Any, np.dtype[np.floating[Any]]]):
+    """An (height, width, 4) RGBA float image, row 0 at the top: a numpy array that also saves
+    itself as a PNG and shows itself in notebooks.
+
+    Slices and arithmetic that keep the (height, width, 4) float shape stay images; everything
+    else (a channel, a comparison, a reduction) is a plain array. ``np.asarray(image)`` gives
+    the plain array.
+
+    Examples
+    --------
+    >>> import numpy as np, glshade as gs
+    >>> image = np.zeros((2, 3, 4)).view(gs.Image)
+    >>> image.save("black.png")  # doctest: +SKIP
+    """
+
+    def save(self, path: str | Path) -> Path:
+        """Writes the image as an 8-bit RGBA PNG (values clipped to [0, 1], NaN as 0).
+
+        Parameters
+        ----------
+        path : str or Path
+            Where to write.
+
+        Returns
+        -------
+        Path
+            The path written.
+        """
+        return write_png(path, np.asarray(self))
+
+    def _repr_png_(self) -> bytes:
+        """The PNG that IPython and Jupyter show."""
+        return encode_png(np.asarray(self))
+
+    def __getitem__(self, key: Any) -> Any:
+        return _plain_unless_image(super().__getitem__(key))
+
+    def __array_wrap__(self, array: Any, context: Any = None, return_scalar: bool = False) -> Any:
+        result = _plain_unless_image(super().__array_wrap__(array, context, return_scalar))
+        return result[()] if return_scalar and np.ndim(result) == 0 else result
+
+
+def _plain_unless_image(value: Any) -> Any:
+    if isinstance(value, Image) and not _image_shaped(value):
+        return value.view(np.ndarray)
+    return value
+
+
+def _size(value: int, name: str) -> int:
+    if isinstance(value, bool) or not isinstance(value, int | np.integer):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if value < 1:
+        raise ValueError(f"{name} must be positive, got {value}")
+    return int(value)
+
+
+def _name(value: object, name: str) -> str:
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | None,
+    scene: Scene,
+    camera: Camera,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: ArrayLike | None = ...,
+    color_material: ColorMaterialMode | None = ...,
+    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    depth: Literal[False] = ...,
+) -> Image: ...
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | None,
+    scene: Scene,
+    camera: Camera,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: ArrayLike | None = ...,
+    color_material: ColorMaterialMode | None = ...,
+    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    depth: Literal[True],
+) -> tuple[Image, FloatArray]: ...
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | None,
+    scene: Scene,
+    camera: Camera,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: ArrayLike | None = ...,
+    color_material: ColorMaterialMode | None = ...,
+    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    depth: bool,
+) -> Image | tuple[Image, FloatArray]: ...
+def render(
+    vertices: Any,
+    faces: ArrayLike | None,
+    scene: Scene,
+    camera: Camera,
+    *,
+    width: int = 512,
+    height: int = 512,
+    shading: Shading = "phong",
+    normals: ArrayLike | None = None,
+    colors: ArrayLike | None = None,
+    color_material: ColorMaterialMode | None = None,
+    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    model: ArrayLike | None = None,
+    normalize: bool = True,
+    rescale_normal: bool = False,
+    cull: Cull | None = None,
+    background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
+    depth: bool = False,
+) -> Image | tuple[Image, FloatArray]:
+    """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
+
+    Parameters
+    ----------
+    vertices : (n, 3) float32 or float64, or a mesh
+        Vertex positions in model coordinates; or an object with ``.vertices`` and ``.faces``
+        (a ``trimesh.Trimesh``) when `faces` is None.
+    faces : (m, 3) int, any integer dtype
+        Vertex indices of each triangle; counter-clockwise on screen is the front.
+    scene : Scene
+        Lights and viewer in eye coordinates (as for `shade`), materials, light model. With
+        ``two_side``, back-facing triangles get the back colour; with ``separate_specular``,
+        the specular colour is added after interpolation and the sum clamped (GL's colour sum).
+    camera : Camera
+        The view and projection.
+    width, height : int
+        The image size in pixels, each in [1, 16384].
+    shading : {"phong", "gouraud", "flat"}
+        Where the equation is evaluated: at every pixel with the interpolated position and
+        normal (``"phong"``), at the vertices with the colours interpolated (``"gouraud"``, GL's
+        smooth shading), or once per face with its face normal at its last vertex (``"flat"``,
+        GL's flat shading with the provoking vertex convention).
+    normals : (n, 3) or (m, 3) float, optional
+        One normal per vertex for Phong and Gouraud, one per face for flat shading. Default:
+        `vertex_normals` (angle-weighted) or `face_normals` of the mesh.
+    colors : (n, 3) or (n, 4) float, optional
+        Per-vertex colours for ``GL_COLOR_MATERIAL``, interpolated like the normals (flat
+        shading takes the last vertex's); `color_material` defaults to "ambient_and_diffuse".
+    color_material, color_material_face : str
+        As for `shade`.
+    model : (4, 4) float, optional
+        Model to world coordinates, affine; positions reach eye coordinates through
+        ``camera.view @ model`` and normals through its inverse transpose.
+    normalize : bool
+        ``GL_NORMALIZE`` wherever the equation is evaluated, so per pixel for Phong (where the
+        interpolated normal is shorter than 1). On by default, unlike in `shade`.
+    rescale_normal : bool
+        ``GL_RESCALE_NORMAL``.
+    cull : {None, "back", "front", "front_and_back"}
+        Which triangles to discard by their winding on screen (None: none, GL's default).
+    background : (3,) or (4,) float
+        The clear colour; default transparent black.
+    depth : bool
+        Also return the depth buffer.
+
+    Returns
+    -------
+    Image
+        (height, width, 4) RGBA of the vertices' dtype, row 0 at the top of the picture.
+    depth : (height, width) ndarray, with ``depth=True``
+        GL window depth in [0, 1] (``glDepthRange(0, 1)``), 1 where nothing is drawn.
+
+    Raises
+    ------
+    IndexError
+        For a face index out of range.
+    ValueError, TypeError
+        For wrong shapes, dtypes, names, sizes or matrices.
+
+    Examples
+    --------
+    >>> import numpy as np, glshade as gs
+    >>> v = np.array([[-1, -1, 0], [1, -1, 0], [0, 1, 0]], np.float32)
+    >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))])
+    >>> image = gs.render(v, [[0, 1, 2]], scene, gs.Camera(), width=4, height=4)
+    >>> image.shape, image.dtype
+    ((4, 4, 4), dtype('float32'))
+    """
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    if not isinstance(camera, Camera):
+        raise TypeError(f"camera must be a glshade.Camera, got {type(camera)!r}")
+    v, f = _mesh(vertices, faces)
+    n = None if normals is None else rows(normals, "normals", v.dtype)
+    c = None
+    if colors is not None:
+        c = rows(colors, "colors", v.dtype, width="3 or 4")
+        color_material = color_material or "ambient_and_diffuse"
+    for name, value in (
+        ("shading", shading),
+        ("color_material_face", color_material_face),
+        ("cull", "none" if cull is None else cull),
+    ):
+        _name(value, name)
+    if color_material is not None:
+        _name(color_material, "color_material")
+    w, h = _size(width, "width"), _size(height, "height")
+    image, z = _glshade.render(
+        v,
+        f,
+        *scene._native(),
+        camera.view,
+        camera.projection_matrix(w, h),
+        _matrix(model, "model"),
+        w,
+        h,
+        shading,
+        n,
+        c,
+        color_material,
+        color_material_face,
+        bool(normalize),
+        bool(rescale_normal),
+        "none" if cull is None else cull,
+        _rgba(background, "background"),
+    )
+    result = image.view(Image)
+    return (result, z) if depth else result

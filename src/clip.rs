@@ -1,0 +1,223 @@
+//! Clipping of triangles in homogeneous clip coordinates (GL 2.1 §2.12).
+//!
+//! GL clips against the six planes −w ≤ x, y, z ≤ w. Against the near and far planes this
+//! changes which fragments exist (depth clipping), so it is done exactly as GL does. Against the
+//! side planes it only bounds window coordinates, since fragments outside the viewport are
+//! discarded anyway; here the side planes are pushed out to a guard band |x|, |y| ≤
+//! [`GUARD_BAND`]·w, as hardware and llvmpipe do, so that only triangles reaching far outside
+//! the viewport are cut and every triangle stays inside the rasteriser's fixed-point range.
+//!
+//! Every vertex of a clipped polygon carries its barycentric coordinates in the original
+//! triangle, so attributes are always interpolated from the original three vertices.
+
+use glam::{DVec3, DVec4};
+
+/// The guard band, in units of w (normalised device coordinates): side planes at ±4 keep
+/// window coordinates within 2.5 viewports of the origin.
+pub const GUARD_BAND: f64 = 4.0;
+
+/// Most vertices a triangle clipped by six planes can have (each plane adds at most one).
+pub const MAX_VERTICES: usize = 9;
+
+/// The planes p with p · (x, y, z, w) ≥ 0 inside: near, far, then the guard band.
+const PLANES: [DVec4; 6] = [
+    DVec4::new(0.0, 0.0, 1.0, 1.0),
+    DVec4::new(0.0, 0.0, -1.0, 1.0),
+    DVec4::new(1.0, 0.0, 0.0, GUARD_BAND),
+    DVec4::new(-1.0, 0.0, 0.0, GUARD_BAND),
+    DVec4::new(0.0, 1.0, 0.0, GUARD_BAND),
+    DVec4::new(0.0, -1.0, 0.0, GUARD_BAND),
+];
+
+/// A vertex of a clipped polygon.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ClipVertex {
+    /// Clip coordinates (x, y, z, w).
+    pub clip: DVec4,
+    /// Barycentric coordinates in the original triangle (they sum to 1).
+    pub weights: DVec3,
+}
+
+/// A convex polygon of up to [`MAX_VERTICES`] vertices, in the original triangle's order.
+#[derive(Clone, Copy, Debug)]
+struct Polygon {
+    vertices: [ClipVertex; MAX_VERTICES],
+    len: usize,
+}
+
+impl Polygon {
+    fn vertices(&self) -> &[ClipVertex] {
+        &self.vertices[..self.len]
+    }
+}
+
+/// Bit k set when `clip` is outside plane k.
+fn outcode(clip: DVec4) -> u8 {
+    PLANES
+        .iter()
+        .enumerate()
+        .fold(0, |code, (k, p)| code | (u8::from(p.dot(clip) < 0.0) << k))
+}
+
+/// The point where the edge from `inside` to `outside` crosses `plane`; always computed from
+/// the inside end, so the two triangles sharing an edge cut it at the same point.
+fn crossing(plane: DVec4, inside: ClipVertex, outside: ClipVertex) -> ClipVertex {
+    let (d_in, d_out) = (plane.dot(inside.clip), plane.dot(outside.clip));
+    let t = d_in / (d_in - d_out);
+    ClipVertex {
+        clip: inside.clip + (outside.clip - inside.clip) * t,
+        weights: inside.weights + (outside.weights - inside.weights) * t,
+    }
+}
+
+/// Clips the triangle with clip coordinates `corners` and calls `emit` with each triangle of
+/// what is left inside, a fan around the first vertex of the clipped polygon (the triangle
+/// itself when wholly inside; nothing when wholly outside or when a coordinate is not finite).
+pub fn clip_triangle(corners: [DVec4; 3], mut emit: impl FnMut([ClipVertex; 3])) {
+    if !corners.iter().all(|c| c.is_finite()) {
+        return;
+    }
+    let weights = [DVec3::X, DVec3::Y, DVec3::Z];
+    let corners: [ClipVertex; 3] = std::array::from_fn(|i| ClipVertex {
+        clip: corners[i],
+        weights: weights[i],
+    });
+    let codes = corners.map(|c| outcode(c.clip));
+    if codes == [0; 3] {
+        return emit(corners);
+    }
+    if codes[0] & codes[1] & codes[2] != 0 {
+        return;
+    }
+    let mut polygon = Polygon {
+        vertices: [corners[0]; MAX_VERTICES],
+        len: 3,
+    };
+    polygon.vertices[..3].copy_from_slice(&corners);
+    let crossed = codes[0] | codes[1] | codes[2];
+    for (k, &plane) in PLANES.iter().enumerate() {
+        if crossed & (1 << k) == 0 {
+            continue;
+        }
+        let mut next = Polygon {
+            vertices: polygon.vertices,
+            len: 0,
+        };
+        let vertices = polygon.vertices();
+        for (i, &a) in vertices.iter().enumerate() {
+            let b = vertices[(i + 1) % vertices.len()];
+            let (a_in, b_in) = (plane.dot(a.clip) >= 0.0, plane.dot(b.clip) >= 0.0);
+            if a_in {
+                next.vertices[next.len] = a;
+                next.len += 1;
+            }
+            if a_in != b_in {
+                next.vertices[next.len] = if a_in {
+                    crossing(plane, a, b)
+                } else {
+                    crossing(plane, b, a)
+                };
+                next.len += 1;
+            }
+        }
+        if next.len < 3 {
+            return;
+        }
+        polygon = next;
+    }
+    let v = polygon.vertices();
+    for i in 1..v.len() - 1 {
+        emit([v[0], v[i], v[i + 1]]);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The clipped polygon: the fan's first vertex, then the far vertex of each triangle.
+    fn clipped(corners: [DVec4; 3]) -> Vec<ClipVertex> {
+        let mut out = Vec::new();
+        clip_triangle(corners, |[a, b, c]| {
+            if out.is_empty() {
+                out.extend([a, b]);
+            }
+            out.push(c);
+        });
+        out
+    }
+
+    #[test]
+    fn a_triangle_inside_is_kept_as_is() {
+        let corners = [
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            DVec4::new(1.0, 0.0, 0.5, 1.0),
+            DVec4::new(0.0, 1.0, -0.5, 1.0),
+        ];
+        let v = clipped(corners);
+        assert_eq!(v.len(), 3);
+        assert_eq!(v[1].clip, corners[1]);
+        assert_eq!(v[2].weights, DVec3::Z);
+    }
+
+    #[test]
+    fn the_near_plane_cuts_one_corner_into_a_quad() {
+        // Corner 2 is behind the near plane z = −w; the cut points are where z = −w.
+        let corners = [
+            DVec4::new(0.0, 0.0, 0.0, 1.0),
+            DVec4::new(1.0, 0.0, 0.0, 1.0),
+            DVec4::new(0.0, 0.0, -3.0, 1.0),
+        ];
+        let v = clipped(corners);
+        assert_eq!(v.len(), 4);
+        for p in &v {
+            assert!(p.clip.z >= -p.clip.w - 1e-15);
+            assert!((p.weights.element_sum() - 1.0).abs() < 1e-15);
+            let from_weights =
+                corners[0] * p.weights.x + corners[1] * p.weights.y + corners[2] * p.weights.z;
+            assert!((from_weights - p.clip).abs().max_element() < 1e-15);
+        }
+        assert!(v.iter().any(|p| (p.weights.z - 1.0 / 3.0).abs() < 1e-15));
+    }
+
+    #[test]
+    fn triangles_outside_one_plane_or_not_finite_are_dropped() {
+        let behind = [
+            DVec4::new(0.0, 0.0, -2.0, 1.0),
+            DVec4::new(1.0, 0.0, -2.0, 1.0),
+            DVec4::new(0.0, 1.0, -3.0, 1.0),
+        ];
+        assert!(clipped(behind).is_empty());
+        let nan = [DVec4::new(f64::NAN, 0.0, 0.0, 1.0), DVec4::W, DVec4::W];
+        assert!(clipped(nan).is_empty());
+    }
+
+    #[test]
+    fn every_plane_can_cut() {
+        // A huge triangle around the guard band leaves the band's square; one whose depth
+        // also crosses the near and far planes is cut by all six.
+        let corners = [
+            DVec4::new(-100.0, -100.0, 0.0, 1.0),
+            DVec4::new(100.0, -100.0, 0.0, 1.0),
+            DVec4::new(0.0, 100.0, 0.0, 1.0),
+        ];
+        let v = clipped(corners);
+        assert_eq!(v.len(), 4);
+        for p in &v {
+            assert_eq!(p.clip.x.abs(), GUARD_BAND);
+            assert_eq!(p.clip.y.abs(), GUARD_BAND);
+        }
+        let corners = [
+            DVec4::new(-100.0, -100.0, -2.0, 1.0),
+            DVec4::new(100.0, -100.0, 2.0, 1.0),
+            DVec4::new(0.0, 100.0, 0.0, 1.0),
+        ];
+        let v = clipped(corners);
+        assert_eq!(v.len(), 4);
+        for p in &v {
+            let c = p.clip;
+            assert!(c.x.abs().max(c.y.abs()) <= GUARD_BAND * c.w + 1e-12);
+            assert!(c.z.abs() <= c.w + 1e-12);
+        }
+    }
+}

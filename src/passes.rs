@@ -1,0 +1,320 @@
+//! Lighting the visible pixels, through the one lighting equation [`crate::shade::shade`]:
+//!
+//! - **Gouraud**: the vertices are lit, and the colours interpolated (GL's smooth shading).
+//! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
+//!   and all those pixels are lit in one `shade` call.
+//! - **Flat**: each face is lit once with its face normal, at its provoking vertex (the last
+//!   one, GL's default), and the colour is constant over the face (`glShadeModel(GL_FLAT)`;
+//!   a `flat` varying in GLSL).
+//!
+//! Every pixel's colour comes from the front or the back colours by the facing of its triangle;
+//! with a separate specular colour the two are summed and clamped (GL's colour sum, §3.9).
+//! Attributes are interpolated in `f64` with the perspective-correct weights of the pixel.
+
+use glam::DVec3;
+use rayon::prelude::*;
+
+use crate::error::Error;
+use crate::normals::{face_normals, index};
+use crate::prepare::ShadeOptions;
+use crate::raster::{Triangle, Viewport};
+use crate::real::Real;
+use crate::render::Mesh;
+use crate::scene::Scene;
+use crate::shade::{shade, VertexColors};
+use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
+
+/// The RGBA of a fragment from its colours in the scene's output order (`colour(k)` is colour
+/// k, front before back, primary before secondary): the back ones for a back-facing triangle
+/// of a two-sided scene, the primary and secondary summed and clamped.
+#[inline]
+fn fragment(scene: &Scene, front: bool, colour: impl Fn(usize) -> [f64; 4]) -> [f64; 4] {
+    let per_side = 1 + usize::from(scene.separate_specular);
+    let base = per_side * usize::from(scene.two_side && !front);
+    let mut c = colour(base);
+    if scene.separate_specular {
+        let s = colour(base + 1);
+        for k in 0..3 {
+            c[k] = (c[k] + s[k]).clamp(0.0, 1.0);
+        }
+    }
+    c
+}
+
+/// Σ weights[j] · rows[face[j]]: an attribute of the face's corners at a pixel.
+#[inline]
+fn interpolate<T: Real, const K: usize>(
+    rows: &[[T; K]],
+    face: [i64; 3],
+    weights: DVec3,
+) -> [f64; K] {
+    let [a, b, c] = face.map(|i| &rows[index(i)]);
+    std::array::from_fn(|k| {
+        weights.x * a[k].to_f64() + weights.y * b[k].to_f64() + weights.z * c[k].to_f64()
+    })
+}
+
+/// Row `i` of plane `plane` of a `shade` output over `n` rows.
+#[inline]
+fn shaded<T: Real>(out: &[T], n: usize, plane: usize, i: usize) -> [f64; 4] {
+    let at = (plane * n + i) * 4;
+    std::array::from_fn(|k| out[at + k].to_f64())
+}
+
+/// `data` cut into consecutive pieces of `counts[r]·width` values, one per image row.
+fn split_rows<'a, X>(mut data: &'a mut [X], counts: &[usize], width: usize) -> Vec<&'a mut [X]> {
+    counts
+        .iter()
+        .map(|&count| {
+            let (head, tail) = std::mem::take(&mut data).split_at_mut(count * width);
+            data = tail;
+            head
+        })
+        .collect()
+}
+
+/// The visible pixels: which triangle is seen at each.
+pub struct Frame<'a> {
+    /// The image size.
+    pub viewport: Viewport,
+    /// The triangles, by id.
+    pub triangles: &'a Triangles,
+    /// The triangle id at each pixel, image rows top-down ([`NO_TRIANGLE`] where none).
+    pub ids: &'a [u32],
+    /// How many pixels each image row draws.
+    counts: Vec<usize>,
+}
+
+impl<'a> Frame<'a> {
+    /// The frame of a visibility buffer.
+    pub fn new(viewport: Viewport, triangles: &'a Triangles, ids: &'a [u32]) -> Self {
+        let counts = ids
+            .par_chunks(viewport.width)
+            .map(|row| row.iter().filter(|&&id| id != NO_TRIANGLE).count())
+            .collect();
+        Self {
+            viewport,
+            triangles,
+            ids,
+            counts,
+        }
+    }
+
+    /// The index of the first drawn pixel of each row among all drawn pixels, in row-major order.
+    fn starts(&self) -> Vec<usize> {
+        let mut total = 0;
+        self.counts
+            .iter()
+            .map(|&c| {
+                total += c;
+                total - c
+            })
+            .collect()
+    }
+
+    /// Writes `colour(triangle, x, y, k)` (pixel (x, y) in window coordinates, the k-th drawn
+    /// pixel) at every drawn pixel of `image` and `background` elsewhere.
+    fn paint<T: Real>(
+        &self,
+        image: &mut [T],
+        background: [f64; 4],
+        colour: impl Fn(&Triangle, usize, usize, usize) -> [f64; 4] + Sync,
+    ) {
+        let width = self.viewport.width;
+        let starts = self.starts();
+        image
+            .par_chunks_mut(width * 4)
+            .zip(self.ids.par_chunks(width))
+            .enumerate()
+            .for_each(|(row, (pixels, ids))| {
+                let y = window_row(self.viewport, row);
+                let mut k = starts[row];
+                for (x, (pixel, &id)) in pixels.chunks_exact_mut(4).zip(ids).enumerate() {
+                    let rgba = if id == NO_TRIANGLE {
+                        background
+                    } else {
+                        k += 1;
+                        colour(self.triangles.get(id), x, y, k - 1)
+                    };
+                    for (d, s) in pixel.iter_mut().zip(rgba) {
+                        *d = T::from_f64(s);
+                    }
+                }
+            });
+    }
+}
+
+/// One lighting pass over a frame: what every mode reads.
+pub struct Pass<'a, T> {
+    /// Lights, materials and light model.
+    pub scene: &'a Scene,
+    /// The mesh.
+    pub mesh: &'a Mesh<'a, T>,
+    /// The `shade` options, with the modelview.
+    pub options: ShadeOptions,
+    /// The visible pixels.
+    pub frame: Frame<'a>,
+    /// The colour of the pixels no triangle covers.
+    pub background: [f64; 4],
+}
+
+impl<T: Real> Pass<'_, T> {
+    /// Gouraud: the vertices are lit with `normals` (one per vertex), the colours interpolated.
+    ///
+    /// # Errors
+    /// Those of [`shade`].
+    pub fn gouraud(&self, normals: &[[T; 3]], image: &mut [T]) -> Result<(), Error> {
+        let mesh = self.mesh;
+        let n = mesh.vertices.len();
+        let mut colours = vec![T::ZERO; self.scene.output_count() * n * 4];
+        shade(
+            self.scene,
+            mesh.vertices,
+            normals,
+            mesh.colors,
+            &self.options,
+            &mut colours,
+        )?;
+        let rows = colours.as_chunks::<4>().0;
+        self.frame.paint(image, self.background, |t, x, y, _| {
+            let face = mesh.faces[t.face as usize];
+            let weights = t.weights_at(x, y);
+            fragment(self.scene, t.front, |plane| {
+                interpolate(&rows[plane * n..(plane + 1) * n], face, weights)
+            })
+        });
+        Ok(())
+    }
+
+    /// Flat: each face is lit at its provoking (last) vertex with its normal, the mesh's
+    /// (one per face) or the face normal.
+    ///
+    /// # Errors
+    /// Those of [`shade`] and [`face_normals`].
+    pub fn flat(&self, image: &mut [T]) -> Result<(), Error> {
+        let mesh = self.mesh;
+        let m = mesh.faces.len();
+        let computed;
+        let normals = if let Some(n) = mesh.normals {
+            n
+        } else {
+            let mut n = vec![[T::ZERO; 3]; m];
+            face_normals(mesh.vertices, mesh.faces, &mut n)?;
+            computed = n;
+            &computed
+        };
+        let provoking: Vec<usize> = mesh.faces.iter().map(|f| index(f[2])).collect();
+        let positions: Vec<[T; 3]> = provoking.iter().map(|&i| mesh.vertices[i]).collect();
+        let colors: Option<Vec<T>> = mesh.colors.map(|c| {
+            provoking
+                .iter()
+                .flat_map(|&i| &c.data[i * c.width..(i + 1) * c.width])
+                .copied()
+                .collect()
+        });
+        let colors = mesh
+            .colors
+            .zip(colors.as_deref())
+            .map(|(c, data)| VertexColors {
+                data,
+                width: c.width,
+            });
+        let mut colours = vec![T::ZERO; self.scene.output_count() * m * 4];
+        shade(
+            self.scene,
+            &positions,
+            normals,
+            colors,
+            &self.options,
+            &mut colours,
+        )?;
+        self.frame.paint(image, self.background, |t, _, _, _| {
+            fragment(self.scene, t.front, |plane| {
+                shaded(&colours, m, plane, t.face as usize)
+            })
+        });
+        Ok(())
+    }
+
+    /// Phong: positions, `normals` (one per vertex) and colours are interpolated to every drawn
+    /// pixel, which are then lit in one call.
+    ///
+    /// # Errors
+    /// Those of [`shade`].
+    pub fn phong(&self, normals: &[[T; 3]], image: &mut [T]) -> Result<(), Error> {
+        let (mesh, frame) = (self.mesh, &self.frame);
+        let total: usize = frame.counts.iter().sum();
+        let color_width = mesh.colors.map_or(0, |c| c.width);
+        let mut positions = vec![[T::ZERO; 3]; total];
+        let mut pixel_normals = vec![[T::ZERO; 3]; total];
+        let mut colors = vec![T::ZERO; total * color_width];
+        split_rows(&mut positions, &frame.counts, 1)
+            .into_par_iter()
+            .zip(split_rows(&mut pixel_normals, &frame.counts, 1))
+            .zip(split_rows(&mut colors, &frame.counts, color_width))
+            .zip(frame.ids.par_chunks(frame.viewport.width))
+            .enumerate()
+            .for_each(|(row, (((positions, normals_out), colors), ids))| {
+                let y = window_row(frame.viewport, row);
+                let drawn = ids.iter().enumerate().filter(|(_, &id)| id != NO_TRIANGLE);
+                for (k, (x, &id)) in drawn.enumerate() {
+                    let t = frame.triangles.get(id);
+                    let face = mesh.faces[t.face as usize];
+                    let weights = t.weights_at(x, y);
+                    positions[k] = interpolate(mesh.vertices, face, weights).map(T::from_f64);
+                    normals_out[k] = interpolate(normals, face, weights).map(T::from_f64);
+                    if let Some(c) = mesh.colors {
+                        let out = &mut colors[k * color_width..(k + 1) * color_width];
+                        for (channel, value) in out.iter_mut().enumerate() {
+                            let at = face.map(|i| c.data[index(i) * color_width + channel]);
+                            *value = T::from_f64(weights.dot(DVec3::from_array(at.map(T::to_f64))));
+                        }
+                    }
+                }
+            });
+        let colors = mesh.colors.map(|c| VertexColors {
+            data: &colors,
+            width: c.width,
+        });
+        let mut colours = vec![T::ZERO; self.scene.output_count() * total * 4];
+        shade(
+            self.scene,
+            &positions,
+            &pixel_normals,
+            colors,
+            &self.options,
+            &mut colours,
+        )?;
+        self.frame.paint(image, self.background, |t, _, _, k| {
+            fragment(self.scene, t.front, |plane| {
+                shaded(&colours, total, plane, k)
+            })
+        });
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fragments_pick_the_side_and_sum_the_specular() {
+        let colours = [
+            [0.5, 0.25, 0.0, 0.5],
+            [0.75, 0.0, 0.5, 1.0],
+            [0.1, 0.2, 0.3, 0.4],
+            [0.0, 0.0, 0.0, 1.0],
+        ];
+        let mut scene = Scene::default();
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[0]);
+        scene.two_side = true;
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[1]);
+        scene.separate_specular = true;
+        assert_eq!(
+            fragment(&scene, true, |k| colours[k]),
+            [1.0, 0.25, 0.5, 0.5]
+        );
+        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[2]);
+    }
+}

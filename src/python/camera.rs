@@ -1,0 +1,57 @@
+//! The binding of the camera matrices (`gluLookAt`, `gluPerspective`, `glOrtho`).
+
+use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
+use pyo3::prelude::*;
+
+use super::{to_pyerr, vec3};
+
+/// A `DMat4` as a row-major (4, 4) float64 array, as numpy prints matrices.
+fn to_numpy(py: Python<'_>, m: glam::DMat4) -> PyResult<Bound<'_, PyAny>> {
+    let rows = m.transpose().to_cols_array().to_vec();
+    Ok(PyArray1::from_vec(py, rows).reshape([4, 4])?.into_any())
+}
+
+/// `gluLookAt`: the (4, 4) view matrix of a camera at `eye` looking at `target`.
+#[pyfunction]
+pub fn look_at<'py>(
+    py: Python<'py>,
+    eye: PyReadonlyArray1<'py, f64>,
+    target: PyReadonlyArray1<'py, f64>,
+    up: PyReadonlyArray1<'py, f64>,
+) -> PyResult<Bound<'py, PyAny>> {
+    let m = crate::camera::look_at(
+        vec3(&eye, "eye")?,
+        vec3(&target, "target")?,
+        vec3(&up, "up")?,
+    )
+    .map_err(to_pyerr)?;
+    to_numpy(py, m)
+}
+
+/// `gluPerspective`: the (4, 4) projection matrix (`fovy` in degrees).
+#[pyfunction]
+pub fn perspective(
+    py: Python<'_>,
+    fovy: f64,
+    aspect: f64,
+    near: f64,
+    far: f64,
+) -> PyResult<Bound<'_, PyAny>> {
+    let m = crate::camera::perspective(fovy, aspect, near, far).map_err(to_pyerr)?;
+    to_numpy(py, m)
+}
+
+/// `glOrtho`: the (4, 4) projection matrix of a box of eye coordinates.
+#[pyfunction]
+pub fn orthographic(
+    py: Python<'_>,
+    left: f64,
+    right: f64,
+    bottom: f64,
+    top: f64,
+    near: f64,
+    far: f64,
+) -> PyResult<Bound<'_, PyAny>> {
+    let m = crate::camera::orthographic(left, right, bottom, top, near, far).map_err(to_pyerr)?;
+    to_numpy(py, m)
+}

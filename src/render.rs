@@ -1,0 +1,392 @@
+//! Rendering a triangle mesh with flat, Gouraud or Phong shading: GL 2.1's pipeline (§2.11–3.5)
+//! around the one lighting equation. Vertices go to clip coordinates, faces are clipped
+//! ([`crate::clip`]) and set up ([`crate::raster`]), the nearest triangle is found at every
+//! pixel ([`crate::visibility`]), and the visible pixels are lit ([`crate::passes`]).
+
+use glam::{DMat4, DVec4};
+use rayon::prelude::*;
+
+use crate::camera::{check_affine, Camera};
+use crate::clip::clip_triangle;
+use crate::error::Error;
+use crate::material::ColorMaterial;
+use crate::normals::{check_faces, index, vertex_normals, Weighting};
+use crate::passes::{Frame, Pass};
+use crate::prepare::ShadeOptions;
+use crate::raster::{Cull, Triangle, Viewport};
+use crate::real::Real;
+use crate::scene::Scene;
+use crate::shade::{shade, VertexColors};
+use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS, NO_TRIANGLE};
+
+/// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
+/// seven of a face.
+const FACES_PER_TASK: usize = 4096;
+const _: () = assert!(7 * FACES_PER_TASK < 1 << CHUNK_BITS);
+
+/// Where the lighting equation is evaluated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Shading {
+    /// Once per face, with the face normal.
+    Flat,
+    /// Once per vertex; colours are interpolated.
+    Gouraud,
+    /// Once per pixel, with interpolated positions and normals.
+    #[default]
+    Phong,
+}
+
+impl Shading {
+    /// Parses `"flat"`, `"gouraud"` or `"phong"`.
+    ///
+    /// # Errors
+    /// A value error naming `shading` for any other string.
+    pub fn parse(name: &str) -> Result<Self, Error> {
+        match name {
+            "flat" => Ok(Self::Flat),
+            "gouraud" => Ok(Self::Gouraud),
+            "phong" => Ok(Self::Phong),
+            _ => Err(Error::value(format!(
+                "shading must be 'flat', 'gouraud' or 'phong', got '{name}'"
+            ))),
+        }
+    }
+}
+
+/// A triangle mesh in model coordinates.
+#[derive(Clone, Copy, Debug)]
+pub struct Mesh<'a, T> {
+    /// Vertex positions, (n, 3).
+    pub vertices: &'a [[T; 3]],
+    /// Vertex indices of each triangle, (m, 3); counter-clockwise is the front.
+    pub faces: &'a [[i64; 3]],
+    /// Normals: one per vertex for Gouraud and Phong, one per face for flat shading; `None`
+    /// computes them (angle-weighted vertex normals, or face normals).
+    pub normals: Option<&'a [[T; 3]]>,
+    /// Per-vertex colours for `GL_COLOR_MATERIAL`, (n, 3) or (n, 4).
+    pub colors: Option<VertexColors<'a, T>>,
+}
+
+/// Everything of a render besides the scene, the mesh and the camera.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// The image size.
+    pub viewport: Viewport,
+    /// Flat, Gouraud or Phong.
+    pub shading: Shading,
+    /// Face culling.
+    pub cull: Cull,
+    /// Model to world coordinates (affine).
+    pub model: DMat4,
+    /// The clear colour, RGBA.
+    pub background: [f64; 4],
+    /// `GL_NORMALIZE`, applied wherever the equation is evaluated (after interpolation for
+    /// Phong).
+    pub normalize: bool,
+    /// `GL_RESCALE_NORMAL`.
+    pub rescale_normal: bool,
+    /// `GL_COLOR_MATERIAL`, with [`Mesh::colors`].
+    pub color_material: Option<ColorMaterial>,
+}
+
+impl Default for RenderOptions {
+    /// A 512 x 512 Phong render with GL's defaults otherwise, and `GL_NORMALIZE` on.
+    fn default() -> Self {
+        Self {
+            viewport: Viewport {
+                width: 512,
+                height: 512,
+            },
+            shading: Shading::Phong,
+            cull: Cull::None,
+            model: DMat4::IDENTITY,
+            background: [0.0; 4],
+            normalize: true,
+            rescale_normal: false,
+            color_material: None,
+        }
+    }
+}
+
+/// Checks the arguments of [`render`] that the lighting equation does not check itself.
+fn validate<T: Real>(
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    pixels: usize,
+    depth: usize,
+) -> Result<(), Error> {
+    options.viewport.validate()?;
+    let Viewport { width, height } = options.viewport;
+    if pixels != width * height * 4 || depth != width * height {
+        return Err(Error::value(format!(
+            "the image must hold {height} x {width} x 4 values and the depth {height} x {width}, \
+             got {pixels} and {depth}"
+        )));
+    }
+    camera.validate()?;
+    check_affine(&options.model, "model")?;
+    if !options.background.iter().all(|c| c.is_finite()) {
+        return Err(Error::value(format!(
+            "background must be finite, got {:?}",
+            options.background
+        )));
+    }
+    check_faces(mesh.faces, mesh.vertices.len())?;
+    let most = MAX_CHUNKS * FACES_PER_TASK;
+    if mesh.faces.len() > most {
+        return Err(Error::value(format!(
+            "faces must number at most {most}, got {}",
+            mesh.faces.len()
+        )));
+    }
+    let (rows, what) = match options.shading {
+        Shading::Flat => (mesh.faces.len(), "one per face for flat shading"),
+        _ => (mesh.vertices.len(), "one per vertex"),
+    };
+    if let Some(normals) = mesh.normals {
+        if normals.len() != rows {
+            return Err(Error::value(format!(
+                "normals must have {rows} rows ({what}), got {}",
+                normals.len()
+            )));
+        }
+    }
+    if let Some(c) = mesh.colors {
+        if c.data.len() != mesh.vertices.len() * c.width {
+            return Err(Error::value(format!(
+                "colors must have one row per vertex ({}), got {}",
+                mesh.vertices.len(),
+                c.data.len() / c.width.max(1)
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// The triangles to rasterise, face by face in order, after clipping and culling.
+fn setup<T: Real>(mesh: &Mesh<'_, T>, to_clip: DMat4, viewport: Viewport, cull: Cull) -> Triangles {
+    let clip: Vec<DVec4> = mesh
+        .vertices
+        .par_iter()
+        .map(|v| to_clip * DVec4::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64(), 1.0))
+        .collect();
+    let chunks = mesh
+        .faces
+        .par_chunks(FACES_PER_TASK)
+        .enumerate()
+        .map(|(chunk, faces)| {
+            let mut out = Vec::with_capacity(faces.len());
+            for (k, face) in faces.iter().enumerate() {
+                let face_index = (chunk * FACES_PER_TASK + k) as u32;
+                clip_triangle(face.map(|i| clip[index(i)]), |corners| {
+                    out.extend(Triangle::new(face_index, corners, viewport, cull));
+                });
+            }
+            out
+        })
+        .collect();
+    Triangles { chunks }
+}
+
+/// Renders `mesh` seen by `camera` under `scene` into `image` ((height, width, 4) RGBA, row 0
+/// at the top) and `depth` ((height, width) window depth in [0, 1], 1 where nothing is drawn).
+///
+/// Lights and the viewer are in eye coordinates, as for [`shade`]; positions reach eye
+/// coordinates through `camera.view · options.model`. Pixels no triangle covers get
+/// `options.background`. A face with a vertex that is not finite after the transform is not
+/// drawn; a NaN normal or colour gives NaN pixels, as in [`shade`]. The result is the same for
+/// any number of threads.
+///
+/// # Errors
+/// A value error for a bad size, camera, model, background, normals, colours, scene or shading
+/// option; an index error for a face index out of range.
+pub fn render<T: Real>(
+    scene: &Scene,
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    image: &mut [T],
+    depth: &mut [T],
+) -> Result<(), Error> {
+    validate(mesh, camera, options, image.len(), depth.len())?;
+    let modelview = camera.view * options.model;
+    let shade_options = ShadeOptions {
+        modelview: Some(modelview),
+        normalize: options.normalize,
+        rescale_normal: options.rescale_normal,
+        color_material: options.color_material,
+        ..ShadeOptions::default()
+    };
+    // A call on no vertices checks the scene and the options before any work is done.
+    let no_colors = mesh.colors.map(|c| VertexColors {
+        data: &c.data[..0],
+        width: c.width,
+    });
+    shade::<T>(scene, &[], &[], no_colors, &shade_options, &mut [])?;
+
+    let viewport = options.viewport;
+    let triangles = setup(mesh, camera.projection * modelview, viewport, options.cull);
+    let mut ids = vec![NO_TRIANGLE; viewport.width * viewport.height];
+    visibility(&triangles, viewport, &mut ids, depth);
+    let pass = Pass {
+        scene,
+        mesh,
+        options: shade_options,
+        frame: Frame::new(viewport, &triangles, &ids),
+        background: options.background,
+    };
+    if options.shading == Shading::Flat {
+        return pass.flat(image);
+    }
+    let computed;
+    let normals = if let Some(n) = mesh.normals {
+        n
+    } else {
+        let mut n = vec![[T::ZERO; 3]; mesh.vertices.len()];
+        vertex_normals(mesh.vertices, mesh.faces, Weighting::Angle, &mut n)?;
+        computed = n;
+        &computed
+    };
+    if options.shading == Shading::Gouraud {
+        pass.gouraud(normals, image)
+    } else {
+        pass.phong(normals, image)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::material::Material;
+
+    fn emission_scene() -> Scene {
+        Scene {
+            material: Material {
+                ambient: [0.0; 4],
+                diffuse: [0.0, 0.0, 0.0, 1.0],
+                emission: [0.25, 0.5, 0.75, 1.0],
+                ..Material::default()
+            },
+            global_ambient: [0.0; 4],
+            ..Scene::default()
+        }
+    }
+
+    /// A square of side 2 at depth `z`, in two triangles.
+    const QUAD: [[f64; 3]; 4] = [
+        [-1.0, -1.0, 0.2],
+        [1.0, -1.0, 0.2],
+        [1.0, 1.0, 0.2],
+        [-1.0, 1.0, 0.2],
+    ];
+    const QUAD_FACES: [[i64; 3]; 2] = [[0, 1, 2], [0, 2, 3]];
+
+    fn draw(mesh: &Mesh<'_, f64>, options: &RenderOptions) -> Result<(Vec<f64>, Vec<f64>), Error> {
+        let Viewport { width, height } = options.viewport;
+        let mut image = vec![0.0; width * height * 4];
+        let mut depth = vec![0.0; width * height];
+        render(
+            &emission_scene(),
+            mesh,
+            &Camera::default(),
+            options,
+            &mut image,
+            &mut depth,
+        )?;
+        Ok((image, depth))
+    }
+
+    fn quad() -> Mesh<'static, f64> {
+        Mesh {
+            vertices: &QUAD,
+            faces: &QUAD_FACES,
+            normals: None,
+            colors: None,
+        }
+    }
+
+    #[test]
+    fn a_screen_filling_quad_covers_every_pixel() {
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let options = RenderOptions {
+                viewport: Viewport {
+                    width: 7,
+                    height: 5,
+                },
+                shading,
+                ..RenderOptions::default()
+            };
+            let (image, depth) = draw(&quad(), &options).unwrap();
+            let expected = [0.25, 0.5, 0.75, 1.0];
+            let close = |p: &[f64]| p.iter().zip(expected).all(|(a, b)| (a - b).abs() < 1e-15);
+            assert!(image.chunks(4).all(close), "{shading:?}");
+            assert!(depth.iter().all(|&z| (z - 0.6).abs() < 1e-15));
+        }
+    }
+
+    #[test]
+    fn bad_arguments_are_rejected_before_any_work() {
+        let mut options = RenderOptions::default();
+        options.viewport.width = 0;
+        assert!(draw(&quad(), &options)
+            .unwrap_err()
+            .message
+            .starts_with("width"));
+        let faces = [[0, 1, 4]];
+        let mesh = Mesh {
+            faces: &faces,
+            ..quad()
+        };
+        let err = draw(&mesh, &RenderOptions::default()).unwrap_err();
+        assert_eq!(err.kind, crate::error::ErrorKind::Index);
+        let normals = [[0.0, 0.0, 1.0]; 4];
+        let mesh = Mesh {
+            normals: Some(&normals),
+            ..quad()
+        };
+        let flat = RenderOptions {
+            shading: Shading::Flat,
+            ..RenderOptions::default()
+        };
+        assert!(draw(&mesh, &flat)
+            .unwrap_err()
+            .message
+            .contains("one per face"));
+    }
+
+    #[test]
+    fn results_do_not_depend_on_the_thread_count() {
+        // A fan of thin triangles through the near and far planes and past the guard band.
+        let vertices: Vec<[f64; 3]> = (0..200)
+            .map(|i| {
+                let t = f64::from(i) * 0.37;
+                [3.0 * t.sin(), 2.0 * t.cos(), 1.5 * (t * 0.5).sin()]
+            })
+            .collect();
+        let faces: Vec<[i64; 3]> = (0..198).map(|i| [0, i + 1, i + 2]).collect();
+        let mesh = Mesh {
+            vertices: &vertices,
+            faces: &faces,
+            normals: None,
+            colors: None,
+        };
+        let options = RenderOptions {
+            viewport: Viewport {
+                width: 90,
+                height: 70,
+            },
+            ..RenderOptions::default()
+        };
+        let run = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            pool.install(|| draw(&mesh, &options).unwrap())
+        };
+        let (one, three) = (run(1), run(3));
+        assert!(one.1.iter().any(|&z| z < 1.0));
+        assert_eq!(one, three);
+    }
+}
