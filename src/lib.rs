@@ -7,14 +7,17 @@
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
 //! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
 
+mod adjacency;
 pub mod error;
 pub mod light;
 pub mod material;
 pub mod normals;
+mod pages;
 pub mod prepare;
 pub mod real;
 pub mod scene;
 pub mod shade;
+mod triangle;
 
 pub use error::{Error, ErrorKind};
 pub use light::Light;
