@@ -6,7 +6,7 @@ use glam::DVec3;
 use crate::real::{normalize_and_length, normalize_or_zero};
 
 /// A face is degenerate when the sine of the angle between its first two edges is at most this
-/// many ulp of the dtype: its cross product is rounding noise, with no direction. The test is
+/// many ulp of the dtype: at its precision the cross product is rounding noise. The test is
 /// relative, so it does not depend on the mesh's scale (trimesh's |cross| <= 1e-13 does).
 const DEGENERATE_ULPS: f64 = 8.0;
 

@@ -111,13 +111,21 @@ def main(argv: Sequence[str] | None = None) -> int:
     bench.add_argument("what", choices=["normals"], help="what to time")
     bench.add_argument("--faces", type=int, default=1_000_000, help="mesh size (default 10^6)")
     bench.add_argument("--repeat", type=int, default=7, help="rounds (default 7)")
+    bench.add_argument(
+        "--settle",
+        type=float,
+        default=0.25,
+        help="seconds of idle before each timed call (default 0.25)",
+    )
     args = parser.parse_args(argv)
     if args.repeat < 1:
         parser.error("--repeat must be positive")
     if args.command == "bench":
         if args.faces < 2:
             parser.error("--faces must be at least 2")
-        return bench_normals(args.faces, args.repeat)
+        if not args.settle >= 0:
+            parser.error("--settle must not be negative")
+        return bench_normals(args.faces, args.repeat, args.settle)
     if args.size < 1:
         parser.error("--size must be positive")
     return demo(args.size, args.repeat, args.output)
