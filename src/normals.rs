@@ -132,8 +132,8 @@ pub fn face_normals<T: Real>(
 /// What the faces add to their vertices, one entry per face. The buffers are fresh on every
 /// call, so their size is paid in page faults: 24 or 48 bytes a face.
 enum FaceTerms {
-    /// Area weighting: the raw cross products.
-    Area(Zeroed<[f64; 3]>),
+    /// Area weighting: the raw cross product and its length.
+    Area(Zeroed<[f64; 4]>),
     /// Uniform weighting: the unit normals (zero if degenerate).
     Uniform(Zeroed<[f64; 3]>),
     /// Angle weighting: the unit normal (zero if degenerate) and the weights of the three corners.
@@ -146,7 +146,8 @@ impl FaceTerms {
         match weighting {
             Weighting::Area => Self::Area(per_face(faces, |face| {
                 let [a, b, c] = corners(vertices, face);
-                cross(b - a, c - b).to_array()
+                let v = cross(b - a, c - b);
+                [v.x, v.y, v.z, v.length()]
             })),
             Weighting::Uniform => Self::Uniform(per_face(faces, |face| {
                 face_normal(corners(vertices, face), epsilon).to_array()
@@ -233,10 +234,10 @@ pub fn vertex_normals<T: Real>(
     // Corner `k` (`3·face + corner`) adds a vector and its length to its vertex.
     match &terms {
         FaceTerms::Area(cross) => {
-            let cross: &[[f64; 3]] = cross;
+            let cross: &[[f64; 4]] = cross;
             gather(&adjacency, cancel, out, |k| {
-                let v = DVec3::from_array(cross[k / 3]);
-                (v, v.length())
+                let [x, y, z, length] = cross[k / 3];
+                (DVec3::new(x, y, z), length)
             });
         }
         FaceTerms::Uniform(normals) => {
