@@ -130,7 +130,7 @@ pub fn face_normals<T: Real>(
 }
 
 /// What the faces add to their vertices, one entry per face. The buffers are fresh on every
-/// call, so their size is paid in page faults: 24 or 48 bytes a face.
+/// call, so their size is paid in page faults: 24 to 48 bytes a face.
 enum FaceTerms {
     /// Area weighting: the raw cross product and its length.
     Area(Zeroed<[f64; 4]>),
