@@ -7,7 +7,6 @@ round; the machine's other load affects both sides alike.
 from __future__ import annotations
 
 import os
-import random
 import statistics
 import time
 from collections.abc import Callable
@@ -48,23 +47,23 @@ def numpy_area_normals(v: NDArray[np.float64], f: NDArray[np.int64]) -> NDArray[
 
 
 def in_rounds(
-    methods: dict[str, Callable[[], Any]], repeat: int, settle: float, seed: int = 0
+    methods: dict[str, Callable[[], Any]], repeat: int, settle: float
 ) -> dict[str, list[float]]:
     """Seconds per call of each method, timed in rounds: every round runs every method once, so
-    all methods see the same load on a shared machine (ratios are taken within a round), in an
-    order shuffled afresh each round, so no method always follows the same one.
+    all methods see the same load on a shared machine (ratios are taken within a round). The
+    order rotates from round to round and runs backwards every other round, so every method
+    takes every place and follows two different methods.
 
     Each call starts `settle` seconds after the previous one ended: numpy's OpenBLAS keeps its
     threads spinning for about 0.1 s after a call, and on a 2-core machine they would take a
     core from whichever method runs next."""
     for call in methods.values():
         call()  # warm-up
-    order = random.Random(seed)
-    times: dict[str, list[float]] = {name: [] for name in methods}
-    for _ in range(repeat):
-        names = list(methods)
-        order.shuffle(names)
-        for name in names:
+    names = list(methods)
+    times: dict[str, list[float]] = {name: [] for name in names}
+    for r in range(repeat):
+        order = names[r % len(names) :] + names[: r % len(names)]
+        for name in order[::-1] if r % 2 else order:
             time.sleep(settle)
             start = time.perf_counter()
             methods[name]()
@@ -95,7 +94,7 @@ def bench_normals(faces: int, repeat: int, settle: float = 0.25) -> int:
         methods["trimesh face_normals"] = lambda: trimesh.Trimesh(v, f, process=False).face_normals
     threads = os.environ.get("RAYON_NUM_THREADS") or f"{os.cpu_count()} (all cores)"
     print(f"{len(f):,} faces, {len(v):,} vertices (a jittered height field, float64, int64)")
-    print(f"{repeat} rounds, each method once per round in shuffled order, {settle} s apart")
+    print(f"{repeat} rounds, each method once per round in rotating order, {settle} s apart")
     print(f"glshade threads: {threads}")
     if trimesh is not None:
         print(
