@@ -67,22 +67,31 @@ pub(crate) fn face_normal([a, b, c]: [DVec3; 3], epsilon: f64) -> DVec3 {
 /// angles, clipped to [−1, 1] as trimesh does before its arccos.
 ///
 /// Each cosine is the edges' dot product over the product of their lengths: trimesh's dot
-/// product of unit edges to a few ulp, for two divisions instead of nine. Edges whose squares
-/// leave the normal range take trimesh's own path, through unit edges.
+/// product of unit edges to a few ulp, for two divisions instead of nine. When every squared
+/// length is in range, the normal is [`face_normal`]'s to the bit, from four independent square
+/// roots the compiler pairs into two; otherwise the rescaling path and trimesh's unit edges.
 // Measured: called out of line, its edges are spilled to the stack and reloaded across store
 // boundaries, and the angle pass takes a third longer.
 #[allow(clippy::inline_always)]
 #[inline(always)]
 pub(crate) fn normal_and_cosines([a, b, c]: [DVec3; 3], epsilon: f64) -> (DVec3, [f64; 2]) {
     let (e0, e1, e2) = (b - a, c - b, c - a);
-    let (l0, l1, l2) = (length(e0), length(e1), length(e2));
-    let normal = unit_normal(e0, e1, l0, l1, epsilon);
-    let cosines = if in_range(e0.dot(e0)) && in_range(e1.dot(e1)) && in_range(e2.dot(e2)) {
-        [e0.dot(e2) / (l0 * l2), -e0.dot(e1) / (l0 * l1)]
+    let n = cross(e0, e1);
+    let squares = [e0.dot(e0), e1.dot(e1), e2.dot(e2), n.dot(n)];
+    let (normal, cosines) = if squares.into_iter().all(in_range) {
+        let [l0, l1, l2, length] = squares.map(f64::sqrt);
+        let degenerate = length <= DEGENERATE_ULPS * epsilon * l0 * l1;
+        (
+            if degenerate { DVec3::ZERO } else { n / length },
+            [e0.dot(e2) / (l0 * l2), -e0.dot(e1) / (l0 * l1)],
+        )
     } else {
         let u = normalize_or_zero::<f64>(e0);
         let (v, w) = (normalize_or_zero::<f64>(e2), normalize_or_zero::<f64>(e1));
-        [u.dot(v), (-u).dot(w)]
+        (
+            unit_normal(e0, e1, length(e0), length(e1), epsilon),
+            [u.dot(v), (-u).dot(w)],
+        )
     };
     (normal, cosines.map(|x| x.clamp(-1.0, 1.0)))
 }
@@ -158,6 +167,27 @@ mod tests {
                 let (_, c2) = normal_and_cosines(triangle(corners, scale), f64::EPSILON);
                 for k in 0..2 {
                     assert!((c1[k] - c2[k]).abs() <= 4.0 * f64::EPSILON, "{c1:?} {c2:?}");
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn the_angle_path_has_face_normals_normal_to_the_bit() {
+        // Including slivers around the degeneracy threshold (sin θ = 8ε ≈ 1.8e-15).
+        let slivers = (0..40).map(|i| {
+            [
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [2.0, 1e-16 * f64::from(i), 0.0],
+            ]
+        });
+        for corners in TRIANGLES.into_iter().chain(slivers) {
+            for scale in [1.0, 2f64.powi(-540), 3.0] {
+                for epsilon in [f64::EPSILON, f64::from(f32::EPSILON)] {
+                    let tri = triangle(corners, scale);
+                    let (normal, _) = normal_and_cosines(tri, epsilon);
+                    assert_eq!(normal, face_normal(tri, epsilon), "{corners:?} x {scale}");
                 }
             }
         }
