@@ -20,17 +20,6 @@ fn in_range(x: f64) -> bool {
     (f64::MIN_POSITIVE..=f64::MAX).contains(&x)
 }
 
-/// The length of an edge; rescaled (see [`normalize_and_length`]) when its square is out of range.
-#[inline]
-fn length(e: DVec3) -> f64 {
-    let s = e.dot(e);
-    if in_range(s) {
-        s.sqrt()
-    } else {
-        normalize_and_length::<f64>(e).1
-    }
-}
-
 /// trimesh's cross product, (v1 − v0) × (v2 − v1), from those two edges: the same bits as
 /// `triangles.cross`.
 #[inline]
@@ -42,14 +31,25 @@ pub(crate) fn cross(e0: DVec3, e1: DVec3) -> DVec3 {
     )
 }
 
-/// trimesh's unit normal of a face from its first two edges and their lengths, or zero when the
-/// face is degenerate for a dtype of machine epsilon `epsilon` (see [`DEGENERATE_ULPS`]).
+/// Whether a face is degenerate for a dtype of machine epsilon `epsilon` (see
+/// [`DEGENERATE_ULPS`]), from the lengths of its cross product and of its first two edges.
 #[inline]
-fn unit_normal(e0: DVec3, e1: DVec3, l0: f64, l1: f64, epsilon: f64) -> DVec3 {
-    let (unit, length) = normalize_and_length::<f64>(cross(e0, e1));
+fn degenerate(cross_length: f64, l0: f64, l1: f64, epsilon: f64) -> bool {
     // |e0 × e1| = |e0||e1| sin θ; the small factor first, so the product overflows only for
     // edges beyond 1e161.
-    if length <= DEGENERATE_ULPS * epsilon * l0 * l1 {
+    cross_length <= DEGENERATE_ULPS * epsilon * l0 * l1
+}
+
+/// The normal of a face some of whose squared lengths leave the normal range: each length
+/// rescaled by an exact power of two first (see [`normalize_and_length`]).
+#[cold]
+fn normal_rescaled(e0: DVec3, e1: DVec3, epsilon: f64) -> DVec3 {
+    let (unit, length) = normalize_and_length::<f64>(cross(e0, e1));
+    let (l0, l1) = (
+        normalize_and_length::<f64>(e0).1,
+        normalize_and_length::<f64>(e1).1,
+    );
+    if degenerate(length, l0, l1, epsilon) {
         DVec3::ZERO
     } else {
         unit
@@ -60,16 +60,26 @@ fn unit_normal(e0: DVec3, e1: DVec3, l0: f64, l1: f64, epsilon: f64) -> DVec3 {
 #[inline]
 pub(crate) fn face_normal([a, b, c]: [DVec3; 3], epsilon: f64) -> DVec3 {
     let (e0, e1) = (b - a, c - b);
-    unit_normal(e0, e1, length(e0), length(e1), epsilon)
+    let n = cross(e0, e1);
+    let squares = [e0.dot(e0), e1.dot(e1), n.dot(n)];
+    if !squares.into_iter().all(in_range) {
+        return normal_rescaled(e0, e1, epsilon);
+    }
+    // Independent square roots, which the compiler pairs.
+    let [l0, l1, length] = squares.map(f64::sqrt);
+    if degenerate(length, l0, l1, epsilon) {
+        DVec3::ZERO
+    } else {
+        n / length
+    }
 }
 
-/// A triangle's unit normal (zero when degenerate) and the cosines of its first two corner
-/// angles, clipped to [−1, 1] as trimesh does before its arccos.
+/// A triangle's unit normal (that of [`face_normal`], to the bit) and the cosines of its first
+/// two corner angles, clipped to [−1, 1] as trimesh does before its arccos.
 ///
 /// Each cosine is the edges' dot product over the product of their lengths: trimesh's dot
-/// product of unit edges to a few ulp, for two divisions instead of nine. When every squared
-/// length is in range, the normal is [`face_normal`]'s to the bit, from four independent square
-/// roots the compiler pairs into two; otherwise the rescaling path and trimesh's unit edges.
+/// product of unit edges to a few ulp, for two divisions instead of nine. Squared lengths out of
+/// range take the rescaling path and trimesh's unit edges.
 // Measured: called out of line, its edges are spilled to the stack and reloaded across store
 // boundaries, and the angle pass takes a third longer.
 #[allow(clippy::inline_always)]
@@ -79,19 +89,18 @@ pub(crate) fn normal_and_cosines([a, b, c]: [DVec3; 3], epsilon: f64) -> (DVec3,
     let n = cross(e0, e1);
     let squares = [e0.dot(e0), e1.dot(e1), e2.dot(e2), n.dot(n)];
     let (normal, cosines) = if squares.into_iter().all(in_range) {
+        // Four independent square roots, which the compiler pairs into two instructions.
         let [l0, l1, l2, length] = squares.map(f64::sqrt);
-        let degenerate = length <= DEGENERATE_ULPS * epsilon * l0 * l1;
-        (
-            if degenerate { DVec3::ZERO } else { n / length },
-            [e0.dot(e2) / (l0 * l2), -e0.dot(e1) / (l0 * l1)],
-        )
+        let normal = if degenerate(length, l0, l1, epsilon) {
+            DVec3::ZERO
+        } else {
+            n / length
+        };
+        (normal, [e0.dot(e2) / (l0 * l2), -e0.dot(e1) / (l0 * l1)])
     } else {
         let u = normalize_or_zero::<f64>(e0);
         let (v, w) = (normalize_or_zero::<f64>(e2), normalize_or_zero::<f64>(e1));
-        (
-            unit_normal(e0, e1, length(e0), length(e1), epsilon),
-            [u.dot(v), (-u).dot(w)],
-        )
+        (normal_rescaled(e0, e1, epsilon), [u.dot(v), (-u).dot(w)])
     };
     (normal, cosines.map(|x| x.clamp(-1.0, 1.0)))
 }
