@@ -136,8 +136,9 @@ enum FaceTerms {
     Area(Zeroed<[f64; 4]>),
     /// Uniform weighting: the unit normals (zero if degenerate).
     Uniform(Zeroed<[f64; 3]>),
-    /// Angle weighting: the unit normal (zero if degenerate) and the weights of the three corners.
-    Angle(Zeroed<[[f64; 3]; 2]>),
+    /// Angle weighting: the unit normals (zero if degenerate) and the weights of the three
+    /// corners, in two buffers (each under the heap's 32 MiB up to 1.4·10^6 faces).
+    Angle(Zeroed<[f64; 3]>, Zeroed<[f64; 3]>),
 }
 
 impl FaceTerms {
@@ -152,7 +153,10 @@ impl FaceTerms {
             Weighting::Uniform => Self::Uniform(per_face(faces, |face| {
                 face_normal(corners(vertices, face), epsilon).to_array()
             })),
-            Weighting::Angle => Self::Angle(angle_terms(vertices, faces, epsilon)),
+            Weighting::Angle => {
+                let (n, w) = angle_terms(vertices, faces, epsilon);
+                Self::Angle(n, w)
+            }
         }
     }
 }
@@ -180,26 +184,30 @@ fn angle_terms<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
     epsilon: f64,
-) -> Zeroed<[[f64; 3]; 2]> {
-    let mut terms = Zeroed::<[[f64; 3]; 2]>::new(faces.len());
-    terms
+) -> (Zeroed<[f64; 3]>, Zeroed<[f64; 3]>) {
+    let mut normals = Zeroed::<[f64; 3]>::new(faces.len());
+    let mut weights = Zeroed::<[f64; 3]>::new(faces.len());
+    normals
         .par_chunks_mut(ROWS_PER_TASK)
+        .zip(weights.par_chunks_mut(ROWS_PER_TASK))
         .zip(faces.par_chunks(ROWS_PER_TASK))
-        .for_each(|(dst, src)| {
-            for (dst, src) in dst
+        .for_each(|((dn, dw), src)| {
+            for ((dn, dw), src) in dn
                 .chunks_mut(FACES_PER_BLOCK)
+                .zip(dw.chunks_mut(FACES_PER_BLOCK))
                 .zip(src.chunks(FACES_PER_BLOCK))
             {
-                for (term, &face) in dst.iter_mut().zip(src) {
+                for ((n, w), &face) in dn.iter_mut().zip(dw.iter_mut()).zip(src) {
                     let (normal, [c0, c1]) = normal_and_cosines(corners(vertices, face), epsilon);
-                    *term = [normal.to_array(), [c0, c1, 0.0]];
+                    *n = normal.to_array();
+                    *w = [c0, c1, 0.0];
                 }
-                for [normal, weights] in dst.iter_mut() {
-                    *weights = corner_weights(*normal == [0.0; 3], [weights[0], weights[1]]);
+                for (n, w) in dn.iter().zip(dw.iter_mut()) {
+                    *w = corner_weights(*n == [0.0; 3], [w[0], w[1]]);
                 }
             }
         });
-    terms
+    (normals, weights)
 }
 
 /// Writes the normal of every vertex into `out` (one row per vertex): the normalised sum of its
@@ -247,11 +255,10 @@ pub fn vertex_normals<T: Real>(
                 (v, if v == DVec3::ZERO { 0.0 } else { 1.0 })
             });
         }
-        FaceTerms::Angle(terms) => {
-            let terms: &[[[f64; 3]; 2]] = terms;
+        FaceTerms::Angle(normals, weights) => {
+            let (normals, weights): (&[[f64; 3]], &[[f64; 3]]) = (normals, weights);
             gather(&adjacency, cancel, out, |k| {
-                let [normal, weights] = terms[k / 3];
-                let weight = weights[k % 3];
+                let (normal, weight) = (normals[k / 3], weights[k / 3][k % 3]);
                 (DVec3::from_array(normal) * weight, weight)
             });
         }
@@ -427,7 +434,7 @@ mod tests {
     }
 
     fn thread_count_does_not_matter<T: Real>() {
-        // 100,000 faces: several tasks per thread, and angle terms large enough to be mapped.
+        // 100,000 faces: several tasks per thread.
         let n = 40_000_u32;
         let v: Vec<[T; 3]> = (0..n)
             .map(|i| {
