@@ -7,6 +7,7 @@
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
 //! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
 
+mod adjacency;
 pub mod camera;
 pub mod clip;
 pub mod dispatch;
@@ -17,6 +18,7 @@ pub mod lanes;
 pub mod light;
 pub mod material;
 pub mod normals;
+mod pages;
 pub mod passes;
 pub mod plan;
 pub mod prepare;
@@ -25,6 +27,7 @@ pub mod real;
 pub mod render;
 pub mod scene;
 pub mod shade;
+mod triangle;
 pub mod visibility;
 
 pub use camera::Camera;

@@ -3,26 +3,31 @@
 //!
 //! Vertex normals are a *gather*: every vertex sums the contributions of its faces in face order
 //! through a vertex-to-face adjacency, so results are identical for any number of threads.
+//!
+//! All geometry runs in `f64`, also for `f32` vertices (widening is exact), as trimesh computes;
+//! only the degeneracy and cancellation thresholds depend on the dtype, and results are rounded
+//! to it once, at the end.
 
+use glam::DVec3;
 use rayon::prelude::*;
 
+use crate::adjacency::{index, Adjacency};
 use crate::error::Error;
-use crate::real::{normalize_and_length, normalize_or_zero, Real, Vector3};
+use crate::pages::Zeroed;
+use crate::real::{normalize_and_length, Real};
+use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 
 /// Rows per parallel task for the per-face and per-vertex loops.
 const ROWS_PER_TASK: usize = 4096;
 
-/// A face is degenerate when the sine of the angle between its first two edges is at most this
-/// many ulp of the dtype: its cross product is rounding noise, with no direction. The test is
-/// relative, so it does not depend on the mesh's scale (trimesh's |cross| <= 1e-13 does).
-const DEGENERATE_ULPS: f64 = 8.0;
+/// Faces per block of the angle pass, which computes a block's cosines first and their arccos
+/// next: the arccos calls of neighbouring faces then overlap instead of each waiting on its
+/// face's square roots and divisions.
+const FACES_PER_BLOCK: usize = 256;
 
 /// A vertex's contributions cancel when their sum is at most this many ulp of the sum of their
 /// magnitudes: what is left is rounding noise, with no direction.
 const CANCELLED_ULPS: f64 = 8.0;
-
-/// trimesh's `tol.merge`: a face with a corner angle below 1e-8 rad gets angle weight 0.
-const MIN_CORNER_ANGLE: f64 = 1e-8;
 
 /// How the face normals around a vertex are weighted.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -59,21 +64,26 @@ impl Weighting {
 /// An index error naming the first bad face, the index and the vertex count.
 pub fn check_faces(faces: &[[i64; 3]], vertex_count: usize) -> Result<(), Error> {
     let bound = i64::try_from(vertex_count).unwrap_or(i64::MAX);
-    if let Some((f, &v)) = faces
-        .iter()
+    let bad = |v: &i64| *v < 0 || *v >= bound;
+    let Some(f) = faces
+        .par_chunks(ROWS_PER_TASK)
         .enumerate()
-        .find_map(|(f, face)| face.iter().find(|&&v| v < 0 || v >= bound).map(|v| (f, v)))
-    {
-        let why = if v < 0 {
-            "negative indices are not allowed"
-        } else {
-            "out of range"
-        };
-        return Err(Error::index(format!(
-            "face {f} refers to vertex {v} ({why}), but there are only {vertex_count} vertices"
-        )));
-    }
-    Ok(())
+        .find_map_first(|(t, chunk)| {
+            let first = chunk.iter().position(|face| face.iter().any(bad))?;
+            Some(t * ROWS_PER_TASK + first)
+        })
+    else {
+        return Ok(());
+    };
+    let v = faces[f].into_iter().find(bad).unwrap_or_default();
+    let why = if v < 0 {
+        "negative indices are not allowed"
+    } else {
+        "out of range"
+    };
+    Err(Error::index(format!(
+        "face {f} refers to vertex {v} ({why}), but there are only {vertex_count} vertices"
+    )))
 }
 
 /// Checks that an output has `rows` rows.
@@ -88,61 +98,10 @@ fn check_rows<R>(out: &[R], rows: usize) -> Result<(), Error> {
     }
 }
 
-/// A vertex index that [`check_faces`] has proven to be in `0..vertex_count`.
+/// The corners of a checked face, widened to `f64`.
 #[inline]
-#[allow(clippy::cast_sign_loss)]
-pub(crate) fn index(v: i64) -> usize {
-    v as usize
-}
-
-/// The corners of a checked face as vectors.
-#[inline]
-fn corners<T: Real>(vertices: &[[T; 3]], face: [i64; 3]) -> [T::Vec3; 3] {
-    face.map(|i| T::Vec3::from_array(vertices[index(i)]))
-}
-
-/// trimesh's cross product, (v1 − v0) × (v2 − v1): the same bits as `triangles.cross`.
-#[inline]
-fn cross<T: Real>([a, b, c]: [T::Vec3; 3]) -> T::Vec3 {
-    let (e0, e1) = (b - a, c - b);
-    let [x0, y0, z0] = e0.to_array();
-    let [x1, y1, z1] = e1.to_array();
-    T::Vec3::from_array([y0 * z1 - z0 * y1, z0 * x1 - x0 * z1, x0 * y1 - y0 * x1])
-}
-
-/// A triangle's unit normal (zero when degenerate, see [`DEGENERATE_ULPS`]) and the unit
-/// directions of its first two edges, b − a and c − b, which the corner angles reuse.
-#[inline]
-fn normal_and_edges<T: Real>(tri: [T::Vec3; 3]) -> (T::Vec3, T::Vec3, T::Vec3) {
-    let (unit, length) = normalize_and_length::<T>(cross::<T>(tri));
-    let (u, l0) = normalize_and_length::<T>(tri[1] - tri[0]);
-    let (w, l1) = normalize_and_length::<T>(tri[2] - tri[1]);
-    // |e0 × e1| = |e0||e1| sin θ; compared in f64 so the product of two lengths cannot overflow.
-    let degenerate =
-        length.to_f64() <= DEGENERATE_ULPS * T::EPSILON.to_f64() * l0.to_f64() * l1.to_f64();
-    (if degenerate { T::Vec3::ZERO } else { unit }, u, w)
-}
-
-/// trimesh's first two corner angles: the arccos of the unit edges' dot products. `u` and `w`
-/// are the unit edges b − a and c − b.
-#[inline]
-fn corner_angles<T: Real>([a, _, c]: [T::Vec3; 3], u: T::Vec3, w: T::Vec3) -> [f64; 2] {
-    let v = normalize_or_zero::<T>(c - a);
-    let a0 = u.dot(v).to_f64().clamp(-1.0, 1.0).acos();
-    let a1 = (-u).dot(w).to_f64().clamp(-1.0, 1.0).acos();
-    [a0, a1]
-}
-
-/// trimesh's angle weights from the first two corner angles: the third is π minus both, and all
-/// three are zero when any is below [`MIN_CORNER_ANGLE`].
-#[inline]
-fn corner_weights([a0, a1]: [f64; 2]) -> [f64; 3] {
-    let angles = [a0, a1, std::f64::consts::PI - a0 - a1];
-    if angles.iter().any(|&x| x < MIN_CORNER_ANGLE) {
-        [0.0; 3]
-    } else {
-        angles
-    }
+fn corners<T: Real>(vertices: &[[T; 3]], face: [i64; 3]) -> [DVec3; 3] {
+    face.map(|i| DVec3::from_array(vertices[index(i)].map(T::to_f64)))
 }
 
 /// Writes the unit normal of every face into `out` (one row per face); degenerate faces get
@@ -158,102 +117,97 @@ pub fn face_normals<T: Real>(
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
     check_rows(out, faces.len())?;
+    let epsilon = T::EPSILON.to_f64();
     out.par_chunks_mut(ROWS_PER_TASK)
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|(dst, src)| {
             for (d, &face) in dst.iter_mut().zip(src) {
-                *d = normal_and_edges::<T>(corners::<T>(vertices, face))
-                    .0
-                    .to_array();
+                let normal = face_normal(corners(vertices, face), epsilon);
+                *d = normal.to_array().map(T::from_f64);
             }
         });
     Ok(())
 }
 
-/// What the faces add to their vertices: per face the vector that is summed (the unit normal,
-/// zero if degenerate, or the raw cross product for area weighting) and, for angle weighting,
-/// its first two corner angles. 24 or 40 bytes a face: the buffer is written fresh on every
-/// call, so its size is paid in page faults.
+/// What the faces add to their vertices, one entry per face. The buffers are fresh on every
+/// call, so their size is paid in page faults: 24 to 48 bytes a face.
 enum FaceTerms {
-    /// Area or uniform weighting: `(vector, unit)`, where `unit` says the vectors are unit normals.
-    Vectors(Vec<glam::DVec3>, bool),
-    /// Angle weighting: the unit normal and the first two corner angles.
-    WithAngles(Vec<(glam::DVec3, [f64; 2])>),
+    /// Area weighting: the raw cross product and its length.
+    Area(Zeroed<[f64; 4]>),
+    /// Uniform weighting: the unit normals (zero if degenerate).
+    Uniform(Zeroed<[f64; 3]>),
+    /// Angle weighting: the unit normals (zero if degenerate) and the weights of the three
+    /// corners, in two buffers (each under the heap's 32 MiB up to 1.4·10^6 faces).
+    Angle(Zeroed<[f64; 3]>, Zeroed<[f64; 3]>),
 }
 
 impl FaceTerms {
     fn new<T: Real>(vertices: &[[T; 3]], faces: &[[i64; 3]], weighting: Weighting) -> Self {
-        let to_f64 = |v: T::Vec3| glam::DVec3::from_array(v.to_array().map(T::to_f64));
-        // One exact-length collect per case (rayon's `unzip` would go through linked chunks).
-        let each = faces
-            .par_iter()
-            .with_min_len(ROWS_PER_TASK)
-            .map(|&face| corners::<T>(vertices, face));
+        let epsilon = T::EPSILON.to_f64();
         match weighting {
-            Weighting::Area => {
-                Self::Vectors(each.map(|tri| to_f64(cross::<T>(tri))).collect(), false)
-            }
-            Weighting::Uniform => Self::Vectors(
-                each.map(|tri| to_f64(normal_and_edges::<T>(tri).0))
-                    .collect(),
-                true,
-            ),
-            Weighting::Angle => Self::WithAngles(
-                each.map(|tri| {
-                    let (normal, u, w) = normal_and_edges::<T>(tri);
-                    (to_f64(normal), corner_angles::<T>(tri, u, w))
-                })
-                .collect(),
-            ),
-        }
-    }
-
-    /// The term corner `k` (`3·face + corner`) adds to its vertex, and the term's length.
-    #[inline]
-    fn corner(&self, k: usize) -> (glam::DVec3, f64) {
-        match self {
-            Self::Vectors(vectors, false) => (vectors[k / 3], vectors[k / 3].length()),
-            Self::Vectors(vectors, true) => {
-                let v = vectors[k / 3];
-                (v, if v == glam::DVec3::ZERO { 0.0 } else { 1.0 })
-            }
-            Self::WithAngles(terms) => {
-                let (normal, angles) = terms[k / 3];
-                let weight = corner_weights(angles)[k % 3];
-                (normal * weight, weight)
+            Weighting::Area => Self::Area(per_face(faces, |face| {
+                let [a, b, c] = corners(vertices, face);
+                let v = cross(b - a, c - b);
+                [v.x, v.y, v.z, v.length()]
+            })),
+            Weighting::Uniform => Self::Uniform(per_face(faces, |face| {
+                face_normal(corners(vertices, face), epsilon).to_array()
+            })),
+            Weighting::Angle => {
+                let (n, w) = angle_terms(vertices, faces, epsilon);
+                Self::Angle(n, w)
             }
         }
     }
 }
 
-/// The vertex-to-face adjacency in compressed-sparse-row form: the face corners of vertex `v`
-/// are `corners[offsets[v]..offsets[v + 1]]`, each `3·face + corner`, in increasing face order.
-/// `u32` halves the memory traffic of the gather; meshes are limited to 2^32 corners.
-struct Adjacency {
-    offsets: Vec<u32>,
-    corners: Vec<u32>,
+/// `term(face)` for every face, in parallel, into a fresh buffer.
+fn per_face<R, F>(faces: &[[i64; 3]], term: F) -> Zeroed<R>
+where
+    R: bytemuck::Pod + Send,
+    F: Fn([i64; 3]) -> R + Sync,
+{
+    let mut terms = Zeroed::new(faces.len());
+    terms
+        .par_chunks_mut(ROWS_PER_TASK)
+        .zip(faces.par_chunks(ROWS_PER_TASK))
+        .for_each(|(dst, src)| {
+            for (d, &face) in dst.iter_mut().zip(src) {
+                *d = term(face);
+            }
+        });
+    terms
 }
 
-impl Adjacency {
-    /// A counting sort of the corners by vertex: stable, so each vertex lists its faces in order.
-    /// `corner_count` is `3 · faces.len()`, which the caller has checked fits in `u32`.
-    fn new(faces: &[[i64; 3]], vertex_count: usize, corner_count: u32) -> Self {
-        let mut offsets = vec![0u32; vertex_count + 1];
-        for &v in faces.as_flattened() {
-            offsets[index(v) + 1] += 1;
-        }
-        for i in 0..vertex_count {
-            offsets[i + 1] += offsets[i];
-        }
-        let mut next = offsets[..vertex_count].to_vec();
-        let mut corners = vec![0u32; corner_count as usize];
-        for (k, &v) in (0..corner_count).zip(faces.as_flattened()) {
-            let slot = &mut next[index(v)];
-            corners[*slot as usize] = k;
-            *slot += 1;
-        }
-        Self { offsets, corners }
-    }
+/// Per face, the unit normal and the angle weights of its corners (see [`corner_weights`]).
+fn angle_terms<T: Real>(
+    vertices: &[[T; 3]],
+    faces: &[[i64; 3]],
+    epsilon: f64,
+) -> (Zeroed<[f64; 3]>, Zeroed<[f64; 3]>) {
+    let mut normals = Zeroed::<[f64; 3]>::new(faces.len());
+    let mut weights = Zeroed::<[f64; 3]>::new(faces.len());
+    normals
+        .par_chunks_mut(ROWS_PER_TASK)
+        .zip(weights.par_chunks_mut(ROWS_PER_TASK))
+        .zip(faces.par_chunks(ROWS_PER_TASK))
+        .for_each(|((dn, dw), src)| {
+            for ((dn, dw), src) in dn
+                .chunks_mut(FACES_PER_BLOCK)
+                .zip(dw.chunks_mut(FACES_PER_BLOCK))
+                .zip(src.chunks(FACES_PER_BLOCK))
+            {
+                for ((n, w), &face) in dn.iter_mut().zip(dw.iter_mut()).zip(src) {
+                    let (normal, [c0, c1]) = normal_and_cosines(corners(vertices, face), epsilon);
+                    *n = normal.to_array();
+                    *w = [c0, c1, 0.0];
+                }
+                for (n, w) in dn.iter().zip(dw.iter_mut()) {
+                    *w = corner_weights(*n == [0.0; 3], [w[0], w[1]]);
+                }
+            }
+        });
+    (normals, weights)
 }
 
 /// Writes the normal of every vertex into `out` (one row per vertex): the normalised sum of its
@@ -263,7 +217,7 @@ impl Adjacency {
 ///
 /// # Errors
 /// An index error from [`check_faces`], or a value error when `out` does not have one row per
-/// vertex.
+/// vertex or there are more faces than the adjacency can hold ([`Adjacency::MAX_FACES`]).
 pub fn vertex_normals<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
@@ -272,43 +226,71 @@ pub fn vertex_normals<T: Real>(
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
     check_rows(out, vertices.len())?;
-    let corner_count = u32::try_from(faces.len() * 3).map_err(|_| {
-        Error::value(format!(
+    if faces.len() > Adjacency::MAX_FACES {
+        return Err(Error::value(format!(
             "faces must have at most {} rows, got {}",
-            u32::MAX / 3,
+            Adjacency::MAX_FACES,
             faces.len()
-        ))
-    })?;
+        )));
+    }
     // The adjacency's counting sort is sequential: build it while the faces are computed.
     let (adjacency, terms) = rayon::join(
-        || Adjacency::new(faces, vertices.len(), corner_count),
+        || Adjacency::new(faces, vertices.len()),
         || FaceTerms::new(vertices, faces, weighting),
     );
+    let cancel = CANCELLED_ULPS * T::EPSILON.to_f64();
+    // Corner `k` (`3·face + corner`) adds a vector and its length to its vertex.
+    match &terms {
+        FaceTerms::Area(cross) => {
+            let cross: &[[f64; 4]] = cross;
+            gather(&adjacency, cancel, out, |k| {
+                let [x, y, z, length] = cross[k / 3];
+                (DVec3::new(x, y, z), length)
+            });
+        }
+        FaceTerms::Uniform(normals) => {
+            let normals: &[[f64; 3]] = normals;
+            gather(&adjacency, cancel, out, |k| {
+                let v = DVec3::from_array(normals[k / 3]);
+                (v, if v == DVec3::ZERO { 0.0 } else { 1.0 })
+            });
+        }
+        FaceTerms::Angle(normals, weights) => {
+            let (normals, weights): (&[[f64; 3]], &[[f64; 3]]) = (normals, weights);
+            gather(&adjacency, cancel, out, |k| {
+                let (normal, weight) = (normals[k / 3], weights[k / 3][k % 3]);
+                (DVec3::from_array(normal) * weight, weight)
+            });
+        }
+    }
+    Ok(())
+}
+
+/// Writes the normalised sum of every vertex's corner terms into `out` (one row per vertex), or
+/// zero where the sum is at most `cancel` times the sum of the terms' lengths.
+fn gather<T, F>(adjacency: &Adjacency, cancel: f64, out: &mut [[T; 3]], corner: F)
+where
+    T: Real,
+    F: Fn(usize) -> (DVec3, f64) + Sync,
+{
     out.par_chunks_mut(ROWS_PER_TASK)
         .enumerate()
         .for_each(|(t, dst)| {
             for (j, d) in dst.iter_mut().enumerate() {
-                let v = t * ROWS_PER_TASK + j;
-                let (start, end) = (
-                    adjacency.offsets[v] as usize,
-                    adjacency.offsets[v + 1] as usize,
-                );
-                let (mut sum, mut magnitude) = (glam::DVec3::ZERO, 0.0);
-                for &k in &adjacency.corners[start..end] {
-                    let (term, length) = terms.corner(k as usize);
+                let (mut sum, mut magnitude) = (DVec3::ZERO, 0.0);
+                for &k in adjacency.corners_of(t * ROWS_PER_TASK + j) {
+                    let (term, length) = corner(k as usize);
                     sum += term;
                     magnitude += length;
                 }
                 let (unit, length) = normalize_and_length::<f64>(sum);
-                let cancelled = length <= CANCELLED_ULPS * T::EPSILON.to_f64() * magnitude;
-                *d = if cancelled {
+                *d = if length <= cancel * magnitude {
                     [T::ZERO; 3]
                 } else {
                     unit.to_array().map(T::from_f64)
                 };
             }
         });
-    Ok(())
 }
 
 #[cfg(test)]
@@ -423,31 +405,66 @@ mod tests {
         assert!(err.message.contains("negative"));
     }
 
-    #[test]
-    fn results_do_not_depend_on_the_thread_count() {
-        let n = 30_000;
-        let v: Vec<[f32; 3]> = (0..n)
+    /// Every normal of a scrambled mesh, as bits, computed on a pool of `threads` threads.
+    fn normals_on<T: Real>(
+        threads: usize,
+        v: &[[T; 3]],
+        f: &[[i64; 3]],
+        weighting: Option<Weighting>,
+    ) -> Vec<u64> {
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .unwrap();
+        let rows = if weighting.is_some() {
+            v.len()
+        } else {
+            f.len()
+        };
+        let mut out = vec![[T::ZERO; 3]; rows];
+        pool.install(|| match weighting {
+            Some(w) => vertex_normals(v, f, w, &mut out),
+            None => face_normals(v, f, &mut out),
+        })
+        .unwrap();
+        out.as_flattened()
+            .iter()
+            .map(|x| x.to_f64().to_bits())
+            .collect()
+    }
+
+    fn thread_count_does_not_matter<T: Real>() {
+        // 100,000 faces: several tasks per thread.
+        let n = 40_000_u32;
+        let v: Vec<[T; 3]> = (0..n)
             .map(|i| {
-                let t = i as f32;
-                [t.sin(), (t * 0.7).cos(), (t * 0.13).sin()]
+                let t = f64::from(i);
+                [t.sin(), (t * 0.7).cos(), (t * 0.13).sin()].map(T::from_f64)
             })
             .collect();
-        let m = i64::try_from(n).unwrap();
-        let f: Vec<[i64; 3]> = (0..m - 2)
-            .map(|i| [i, (i * 7 + 1) % m, (i * 13 + 2) % m])
+        let m = i64::from(n);
+        let f: Vec<[i64; 3]> = (0..100_000)
+            .map(|i| [i % m, (i * 7 + 1) % m, (i * 13 + 2) % m])
             .collect();
-        let run = |threads| {
-            let pool = rayon::ThreadPoolBuilder::new()
-                .num_threads(threads)
-                .build()
-                .unwrap();
-            let mut out = vec![[0.0_f32; 3]; n];
-            pool.install(|| vertex_normals(&v, &f, Weighting::Angle, &mut out).unwrap());
-            out.as_flattened()
-                .iter()
-                .map(|x| x.to_bits())
-                .collect::<Vec<_>>()
-        };
-        assert_eq!(run(1), run(4));
+        for weighting in [
+            None,
+            Some(Weighting::Angle),
+            Some(Weighting::Area),
+            Some(Weighting::Uniform),
+        ] {
+            let one = normals_on(1, &v, &f, weighting);
+            for threads in [2, 3] {
+                assert!(
+                    one == normals_on(threads, &v, &f, weighting),
+                    "{weighting:?} on {threads} threads"
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn results_do_not_depend_on_the_thread_count() {
+        thread_count_does_not_matter::<f32>();
+        thread_count_does_not_matter::<f64>();
     }
 }

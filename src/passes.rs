@@ -14,8 +14,9 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
+use crate::adjacency::index;
 use crate::error::Error;
-use crate::normals::{face_normals, index};
+use crate::normals::face_normals;
 use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;

@@ -6,11 +6,12 @@
 use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
+use crate::adjacency::index;
 use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::error::Error;
 use crate::material::ColorMaterial;
-use crate::normals::{check_faces, index, vertex_normals, Weighting};
+use crate::normals::{check_faces, vertex_normals, Weighting};
 use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};

@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import os
+import subprocess
+import sys
 from typing import Any
 
 import numpy as np
@@ -77,6 +80,50 @@ def test_nan_vertex_spreads_only_through_its_faces() -> None:
 def test_empty_mesh() -> None:
     assert gs.vertex_normals(np.zeros((4, 3)), np.zeros((0, 3), int)).tolist() == [[0, 0, 0]] * 4
     assert gs.face_normals(np.zeros((0, 3)), np.zeros((0, 3), int)).shape == (0, 3)
+
+
+@pytest.mark.parametrize("weighting", ["angle", "area", "uniform"])
+def test_float32_is_the_float64_result_rounded_once(weighting: str) -> None:
+    # Geometry and sums run in float64 also for float32 vertices (widening is exact).
+    rng = np.random.default_rng(2)
+    v = rng.normal(size=(500, 3)).astype(np.float32)
+    f = rng.integers(0, 500, (900, 3))
+    wide = v.astype(np.float64)
+    np.testing.assert_array_equal(
+        gs.vertex_normals(v, f, weighting), gs.vertex_normals(wide, f, weighting).astype(np.float32)
+    )
+    np.testing.assert_array_equal(
+        gs.face_normals(v, f), gs.face_normals(wide, f).astype(np.float32)
+    )
+
+
+# Every normal of a 10^5-face mesh, both dtypes, as one digest.
+DIGEST = """
+import hashlib, numpy as np, glshade as gs
+from glshade._bench import grid_mesh
+v, f = grid_mesh(100_000)
+f = np.random.default_rng(0).permutation(f)  # scattered faces: long adjacency lists
+digest = hashlib.sha256()
+for vertices in (v, v.astype(np.float32)):
+    for weighting in ("angle", "area", "uniform"):
+        digest.update(gs.vertex_normals(vertices, f, weighting).tobytes())
+    digest.update(gs.face_normals(vertices, f).tobytes())
+print(digest.hexdigest())
+"""
+
+
+def test_results_do_not_depend_on_the_thread_count() -> None:
+    def digest(threads: int) -> str:
+        env = {**os.environ, "RAYON_NUM_THREADS": str(threads)}
+        run = subprocess.run(
+            [sys.executable, "-c", DIGEST], env=env, capture_output=True, text=True, check=True
+        )
+        return run.stdout.strip()
+
+    one = digest(1)
+    assert len(one) == 64
+    assert digest(2) == one
+    assert digest(3) == one
 
 
 @pytest.mark.parametrize(

@@ -36,6 +36,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     )
     bench.add_argument("--size", type=int, default=1024, help="render: image size (default 1024)")
     bench.add_argument("--repeat", type=int, default=7, help="rounds (default 7)")
+    bench.add_argument(
+        "--settle",
+        type=float,
+        default=0.25,
+        help="normals: seconds of idle before each timed call (default 0.25)",
+    )
     args = parser.parse_args(argv)
     if args.repeat < 1:
         parser.error("--repeat must be positive")
@@ -45,9 +51,11 @@ def main(argv: Sequence[str] | None = None) -> int:
         faces = args.faces or (1_000_000 if args.what == "normals" else 100_000)
         if faces < 2:
             parser.error("--faces must be at least 2")
+        if not args.settle >= 0:
+            parser.error("--settle must not be negative")
         if args.what == "render":
             return bench_render(faces, args.size, args.repeat)
-        return bench_normals(faces, args.repeat)
+        return bench_normals(faces, args.repeat, args.settle)
     return demo(args.size, args.repeat, args.output)
 
 

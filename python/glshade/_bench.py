@@ -1,13 +1,14 @@
 """Benchmarks run beside their baselines in the same process: ``python -m glshade bench ...``.
 
 Timings are medians of repeated runs, quoted with the ratio to the baseline measured in the same
-run; the machine's other load affects both sides alike.
+round; the machine's other load affects both sides alike.
 """
 
 from __future__ import annotations
 
 import functools
 import importlib
+import os
 import statistics
 import sys
 import time
@@ -49,24 +50,32 @@ def numpy_area_normals(v: NDArray[np.float64], f: NDArray[np.int64]) -> NDArray[
     return unit
 
 
-def round_robin(methods: dict[str, Callable[[], Any]], repeat: int) -> dict[str, list[float]]:
+def in_rounds(
+    methods: dict[str, Callable[[], Any]], repeat: int, settle: float
+) -> dict[str, list[float]]:
     """Seconds per call of each method, timed in rounds: every round runs every method once, so
     all methods see the same load on a shared machine (ratios are taken within a round). The
-    order rotates from round to round, so no method always runs right after the one that leaves
-    the caches and the allocator in the worst state."""
+    order rotates from round to round and runs backwards every other round, so every method
+    takes every place and follows two different methods.
+
+    Each call starts `settle` seconds after the previous one ended: numpy's OpenBLAS keeps its
+    threads spinning for about 0.1 s after a call, and on a 2-core machine they would take a
+    core from whichever method runs next."""
     for call in methods.values():
         call()  # warm-up
     names = list(methods)
     times: dict[str, list[float]] = {name: [] for name in names}
     for r in range(repeat):
-        for name in names[r % len(names) :] + names[: r % len(names)]:
+        order = names[r % len(names) :] + names[: r % len(names)]
+        for name in order[::-1] if r % 2 else order:
+            time.sleep(settle)
             start = time.perf_counter()
             methods[name]()
             times[name].append(time.perf_counter() - start)
     return times
 
 
-def bench_normals(faces: int, repeat: int) -> int:
+def bench_normals(faces: int, repeat: int, settle: float = 0.25) -> int:
     v, f = grid_mesh(faces)
     v32 = v.astype(np.float32)
     methods: dict[str, Callable[[], Any]] = {
@@ -87,8 +96,16 @@ def bench_normals(faces: int, repeat: int) -> int:
             trimesh.Trimesh(v, f, process=False).vertex_normals
         )
         methods["trimesh face_normals"] = lambda: trimesh.Trimesh(v, f, process=False).face_normals
-    print(f"{len(f):,} faces, {len(v):,} vertices; {repeat} rounds, each method once per round")
-    times = round_robin(methods, repeat)
+    threads = os.environ.get("RAYON_NUM_THREADS") or f"{os.cpu_count()} (all cores)"
+    print(f"{len(f):,} faces, {len(v):,} vertices (a jittered height field, float64, int64)")
+    print(f"{repeat} rounds, each method once per round in rotating order, {settle} s apart")
+    print(f"glshade threads: {threads}")
+    if trimesh is not None:
+        print(
+            f"trimesh {trimesh.__version__}: trimesh.Trimesh(v, f, process=False).vertex_normals "
+            "(and .face_normals) on a fresh mesh per call, so nothing is cached"
+        )
+    times = in_rounds(methods, repeat, settle)
     print(f"\n  {'method':42} {'median':>10}")
     for name, seconds in times.items():
         print(f"  {name:42} {statistics.median(seconds) * 1e3:7.1f} ms")
@@ -98,7 +115,7 @@ def bench_normals(faces: int, repeat: int) -> int:
     reference = trimesh.Trimesh(v, f, process=False).vertex_normals
     difference = np.abs(gs.vertex_normals(v, f) - reference).max()
     print(f"\nmax |glshade - trimesh|, angle weighting, float64: {difference:.1e}")
-    print("\nspeed-up over trimesh (median of the per-round ratios):")
+    print("\nspeed-up over trimesh, per round (median, and the range over the rounds):")
     pairs = [
         (
             "vertex normals, angle, float64",
@@ -114,7 +131,10 @@ def bench_normals(faces: int, repeat: int) -> int:
     ]
     for label, baseline, ours in pairs:
         ratios = [b / o for b, o in zip(times[baseline], times[ours], strict=True)]
-        print(f"  {label:42} {statistics.median(ratios):6.1f}x")
+        print(
+            f"  {label:42} {statistics.median(ratios):6.1f}x"
+            f"   ({min(ratios):.1f}x to {max(ratios):.1f}x)"
+        )
     return 0
 
 
@@ -236,7 +256,7 @@ def bench_render(faces: int, size: int, repeat: int) -> int:
                 glpeers, mesh, shading, scene, camera, size
             )
     results = {name: np.asarray(call()) for name, call in methods.items()}
-    times = round_robin(methods, repeat)
+    times = in_rounds(methods, repeat, settle=0.0)
     print(f"\n  {'method':24} {'median':>10}")
     for name, seconds in times.items():
         print(f"  {name:24} {statistics.median(seconds) * 1e3:7.1f} ms")

@@ -42,9 +42,10 @@ def face_normals(vertices: Any, faces: ArrayLike | None = None) -> FloatArray:
     Returns
     -------
     (m, 3) ndarray of the vertices' dtype
-        ``normalize((v1 - v0) x (v2 - v1))`` per face, trimesh's formula bit for bit, or
-        (0, 0, 0) for a degenerate face: one whose first two edges make an angle with
-        ``|sin| <= 8 eps |e0| |e1|``, so the cross product is rounding noise.
+        ``normalize((v1 - v0) x (v2 - v1))`` per face, trimesh's formula (bit for bit for
+        float64; float32 vertices are computed in float64 and rounded once), or (0, 0, 0) for a
+        degenerate face: one whose first two edges make an angle with ``|sin| <= 8 eps`` of the
+        dtype, so that at its precision the cross product is rounding noise.
 
     Raises
     ------
@@ -80,8 +81,9 @@ def vertex_normals(
     -------
     (n, 3) ndarray of the vertices' dtype
         Unit normals; (0, 0, 0) for a vertex no face uses, whose faces are all degenerate, or
-        whose contributions cancel. Sums run in float64 in face order, so the result does not
-        depend on the number of threads.
+        whose contributions cancel. Geometry and sums run in float64 (float32 vertices too,
+        rounded once at the end), summed in face order, so the result does not depend on the
+        number of threads.
 
     Raises
     ------

@@ -1,7 +1,7 @@
 //! The binding of `face_normals` and `vertex_normals`.
 
 use numpy::{
-    Element, PyArray1, PyArrayMethods, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
+    Element, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
@@ -32,15 +32,18 @@ fn normals_typed<'py, T: Element + Real>(
     } else {
         f.len()
     };
-    let mut out = vec![[T::ZERO; 3]; rows_out];
-    py.detach(|| match weighting {
-        Some(w) => crate::normals::vertex_normals(v, f, w, &mut out),
-        None => crate::normals::face_normals(v, f, &mut out),
-    })
-    .map_err(to_pyerr)?;
-    Ok(PyArray1::from_vec(py, out.into_flattened())
-        .reshape([rows_out, 3])?
-        .into_any())
+    // numpy's allocator backs large arrays with huge pages: far fewer page faults than a Vec.
+    let array = PyArray2::<T>::zeros(py, [rows_out, 3], false);
+    {
+        let mut guard = array.readwrite();
+        let out = guard.as_slice_mut()?.as_chunks_mut::<3>().0;
+        py.detach(|| match weighting {
+            Some(w) => crate::normals::vertex_normals(v, f, w, out),
+            None => crate::normals::face_normals(v, f, out),
+        })
+        .map_err(to_pyerr)?;
+    }
+    Ok(array.into_any())
 }
 
 /// The unit normal of every face, (m, 3) of the vertices' dtype; see `glshade.face_normals`.
