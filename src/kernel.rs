@@ -13,7 +13,9 @@
 //! tiny spot factor keeps its value, and colours are saturated at [`Real::COLOR_SATURATION`]:
 //! finite input never meets `inf · 0` or `inf − inf`.
 
-use crate::lanes::{build, normalize_and_length, normalize_or_zero, Mask, Pack, V3};
+use crate::lanes::{
+    build, normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, Mask, Pack, V3,
+};
 use crate::material::ColorMaterialMode;
 use crate::plan::Plan;
 use crate::prepare::{Prepared, PreparedLight, Source, Spot, Viewer};
@@ -201,44 +203,39 @@ struct SideNormal<T, const N: usize> {
     scale: Scale<T, N>,
 }
 
-/// The light-weighted sums of `S` sides: Σ w·a_cli (shared by the sides), and per side
-/// Σ w(n⊙VP)d_cli and Σ w·f·pow·s_cli.
+/// The light-weighted sums of one side: Σ w·a_cli, Σ w(n⊙VP)d_cli and Σ w·f·pow·s_cli.
 #[derive(Clone, Copy)]
-struct Sums<T, const N: usize, const S: usize> {
+struct Sums<T, const N: usize> {
     ambient: V3<T, N>,
-    diffuse: [V3<T, N>; S],
-    specular: [V3<T, N>; S],
+    diffuse: V3<T, N>,
+    specular: V3<T, N>,
 }
 
-impl<T: Real, const N: usize, const S: usize> Sums<T, N, S> {
+impl<T: Real, const N: usize> Sums<T, N> {
     #[inline(always)]
     fn zero() -> Self {
         Self {
             ambient: V3::zero(),
-            diffuse: [V3::zero(); S],
-            specular: [V3::zero(); S],
+            diffuse: V3::zero(),
+            specular: V3::zero(),
         }
     }
 
     /// Every sum, lane by lane, through `f`.
     #[inline(always)]
-    fn map<U: Real>(&self, f: impl Fn(V3<T, N>) -> V3<U, N>) -> Sums<U, N, S> {
-        let mut out = Sums::<U, N, S>::zero();
-        out.ambient = f(self.ambient);
-        for i in 0..S {
-            out.diffuse[i] = f(self.diffuse[i]);
-            out.specular[i] = f(self.specular[i]);
+    fn map<U: Real>(&self, f: impl Fn(V3<T, N>) -> V3<U, N>) -> Sums<U, N> {
+        Sums {
+            ambient: f(self.ambient),
+            diffuse: f(self.diffuse),
+            specular: f(self.specular),
         }
-        out
     }
 
     #[inline(always)]
     fn add(&mut self, o: &Self) {
         self.ambient = self.ambient + o.ambient;
-        for i in 0..S {
-            self.diffuse[i] = self.diffuse[i] + o.diffuse[i];
-            self.specular[i] = self.specular[i] + o.specular[i];
-        }
+        self.diffuse = self.diffuse + o.diffuse;
+        self.specular = self.specular + o.specular;
     }
 }
 
@@ -264,9 +261,9 @@ pub struct Block<T, const N: usize> {
     pub colors: Option<[Pack<T, N>; 4]>,
 }
 
-/// The up to four RGBA colours of a block, in output order, after the clamp; NaN in the lanes
-/// whose inputs are not finite.
-pub type BlockColors<T, const N: usize> = [[Pack<T, N>; 4]; 4];
+/// The primary and secondary RGBA colours of one side of a block, after the clamp (the
+/// secondary is unused without separate specular).
+pub type SideColors<T, const N: usize> = [[Pack<T, N>; 4]; 2];
 
 /// A prepared scene and its plan: the kernel of one `shade` call.
 pub struct Kernel<'a, T: Real> {
@@ -292,7 +289,7 @@ impl<T: Real> Kernel<'_, T> {
                 attenuation: k,
                 spot,
             } => {
-                let (vp, d) = normalize_and_length(V3::splat(position) - p);
+                let (vp, d) = normalize_and_length_fast(V3::splat(position) - p);
                 let att = if attenuated {
                     attenuation(k, d)
                 } else {
@@ -328,14 +325,14 @@ impl<T: Real> Kernel<'_, T> {
                     Source::Directional {
                         halfway: Some(h), ..
                     } => V3::splat(h),
-                    _ => normalize_or_zero(vp + view),
+                    _ => normalize_or_zero_fast(vp + view),
                 };
                 let power = cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
                 power.or_zero(!h.is_zero())
             }
             Specular::Phong => {
                 let r = side.n.scale(n_dot_vp + n_dot_vp) - vp;
-                let (r_unit, r_length) = normalize_and_length(r);
+                let (r_unit, r_length) = normalize_and_length_fast(r);
                 let zero = r_length.eq(Pack::splat(T::ZERO));
                 let scale = if self.prepared.normalize {
                     Scale::unit()
@@ -381,60 +378,62 @@ impl<T: Real> Kernel<'_, T> {
         out
     }
 
-    /// The light sums of `lights` (the lights `first..` of the scene) at one block.
+    /// The light sums of `lights` (the lights `first..` of the scene) at one block, for
+    /// `side` (0 front, 1 back, whose normal `normal` is already negated).
     #[inline(always)]
-    fn sums<const N: usize, const S: usize>(
+    fn sums<const N: usize>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
         p: V3<T, N>,
-        sides: &[SideNormal<T, N>; S],
+        normal: &SideNormal<T, N>,
+        side: usize,
         view: V3<T, N>,
-    ) -> Sums<T, N, S> {
+    ) -> Sums<T, N> {
         let (prepared, plan) = (self.prepared, self.plan);
         let zero = Pack::splat(T::ZERO);
-        let mut acc = Sums::<T, N, S>::zero();
+        let side_plan = &plan.sides[side];
+        let s = prepared.materials[side].shininess;
+        let mut acc = Sums::<T, N>::zero();
         for (light, lp) in lights.iter().zip(&plan.lights[first..]) {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if lp.ambient {
                 let weight = w.min(Pack::splat(T::SATURATION));
                 acc.ambient = acc.ambient + V3::splat(light.ambient).scale(weight);
             }
-            for (i, side) in sides.iter().enumerate() {
-                let n_dot_vp = side.n.dot(vp);
-                // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
-                let lit = n_dot_vp.gt(zero);
-                if lp.diffuse {
-                    let weight = weight(w, n_dot_vp).or_zero(lit);
-                    acc.diffuse[i] = acc.diffuse[i] + V3::splat(light.diffuse).scale(weight);
-                }
-                let side_plan = &plan.sides[i];
-                if lp.specular && side_plan.specular {
-                    let s = prepared.materials[i].shininess;
-                    let power = if side_plan.power {
-                        self.specular_power(light, side, vp, view, n_dot_vp, s)
-                    } else {
-                        Pack::splat(T::ONE)
-                    };
-                    // Without the gate (learnopengl) a zero normal or a light at the vertex still
-                    // has no direction, so no specular.
-                    let gate = if prepared.specular_gate {
-                        lit
-                    } else {
-                        !(side.n.is_zero() | vp.is_zero())
-                    };
-                    let weight = weight(w, power).or_zero(gate);
-                    acc.specular[i] = acc.specular[i] + V3::splat(light.specular).scale(weight);
-                }
+            let n_dot_vp = normal.n.dot(vp);
+            // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
+            let lit = n_dot_vp.gt(zero);
+            if lp.diffuse {
+                let weight = weight(w, n_dot_vp).or_zero(lit);
+                acc.diffuse = acc.diffuse + V3::splat(light.diffuse).scale(weight);
+            }
+            if lp.specular && side_plan.specular {
+                let power = if side_plan.power {
+                    self.specular_power(light, normal, vp, view, n_dot_vp, s)
+                } else {
+                    Pack::splat(T::ONE)
+                };
+                // Without the gate (learnopengl) a zero normal or a light at the vertex still
+                // has no direction, so no specular.
+                let gate = if prepared.specular_gate {
+                    lit
+                } else {
+                    !(normal.n.is_zero() | vp.is_zero())
+                };
+                let weight = weight(w, power).or_zero(gate);
+                acc.specular = acc.specular + V3::splat(light.specular).scale(weight);
             }
         }
         acc
     }
 
-    /// Every colour of a block of `N` vertices, for `S` sides (1, or 2 with two-sided
-    /// lighting): the equation for `N` vertices at once.
+    /// The colours of one side of a block of `N` vertices (0 front, 1 back: the back of
+    /// two-sided lighting is lit with −n and the back material): the primary and, with separate
+    /// specular, the secondary colour, clamped, NaN in the lanes whose inputs are not finite.
+    /// The equation for `N` vertices at once.
     #[inline(always)]
-    pub fn block<const N: usize, const S: usize>(&self, input: &Block<T, N>) -> BlockColors<T, N> {
+    pub fn block<const N: usize>(&self, input: &Block<T, N>, side: usize) -> SideColors<T, N> {
         let (prepared, plan) = (self.prepared, self.plan);
         let zero = Pack::splat(T::ZERO);
         let (mut p, mut n) = (input.positions, input.normals);
@@ -475,28 +474,28 @@ impl<T: Real> Kernel<'_, T> {
                 scale: Scale::unit(),
             }
         };
-        let back = SideNormal {
-            n: -front.n,
-            unit: -front.unit,
-            ..front
+        let normal = if side == 0 {
+            front
+        } else {
+            SideNormal {
+                n: -front.n,
+                unit: -front.unit,
+                ..front
+            }
         };
-        let sides: [SideNormal<T, N>; S] =
-            std::array::from_fn(|i| if i == 0 { front } else { back });
         let view = match prepared.viewer {
             Viewer::Infinite(v) => V3::splat(v),
-            Viewer::Local(e) if plan.view => normalize_or_zero(V3::splat(e) - p),
+            Viewer::Local(e) if plan.view => normalize_or_zero_fast(V3::splat(e) - p),
             Viewer::Local(_) => V3::zero(),
         };
 
         let lights = &prepared.lights;
         let sums = if lights.len() <= T::SUM_BLOCK {
-            self.sums(lights, 0, p, &sides, view)
+            self.sums(lights, 0, p, &normal, side, view)
         } else {
-            // Partial sums of SUM_BLOCK lights in T, added in f64: the error does not grow
-            // with the light count.
-            let mut total = Sums::<f64, N, S>::zero();
+            let mut total = Sums::<f64, N>::zero();
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums(chunk, b * T::SUM_BLOCK, p, &sides, view);
+                let part = self.sums(chunk, b * T::SUM_BLOCK, p, &normal, side, view);
                 total.add(&part.map(convert::<T, f64, N>));
             }
             total.map(convert::<f64, T, N>)
@@ -504,41 +503,32 @@ impl<T: Real> Kernel<'_, T> {
         let sums = sums.map(sat3);
 
         let nan = Pack::splat(T::NAN);
-        let one = Pack::splat(T::ONE);
-        let mut out = [[zero; 4]; 4];
-        let mut k = 0;
-        let mut emit = |rgb: V3<T, N>, alpha: Pack<T, N>| {
-            // + 0 turns −0 into +0; the clamp keeps NaN, which `finite` then decides.
-            let clamp =
-                |x: Pack<T, N>| Pack::select(finite, (x + zero).clamp(T::ZERO, T::ONE), nan);
-            out[k] = [clamp(rgb.x), clamp(rgb.y), clamp(rgb.z), clamp(alpha)];
-            k += 1;
+        // + 0 turns −0 into +0; the clamp keeps NaN, which `finite` then decides.
+        let clamp = |x: Pack<T, N>| Pack::select(finite, (x + zero).clamp(T::ZERO, T::ONE), nan);
+        let emit = |rgb: V3<T, N>, alpha: Pack<T, N>| {
+            [clamp(rgb.x), clamp(rgb.y), clamp(rgb.z), clamp(alpha)]
+        };
+        let [a, d, s, e] = self.material(side, input.colors);
+        let alpha = d[3];
+        let rgb = |c: [Pack<T, N>; 4]| V3 {
+            x: c[0],
+            y: c[1],
+            z: c[2],
+        };
+        let (a, d, s, e) = (rgb(a), rgb(d), rgb(s), rgb(e));
+        let mul = |m: V3<T, N>, v: V3<T, N>| V3 {
+            x: m.x * v.x,
+            y: m.y * v.y,
+            z: m.z * v.z,
         };
         let global = V3::splat(prepared.global_ambient);
-        for i in 0..S {
-            let [a, d, s, e] = self.material(i, input.colors);
-            let alpha = d[3];
-            let rgb = |c: [Pack<T, N>; 4]| V3 {
-                x: c[0],
-                y: c[1],
-                z: c[2],
-            };
-            let (a, d, s, e) = (rgb(a), rgb(d), rgb(s), rgb(e));
-            let mul = |m: V3<T, N>, v: V3<T, N>| V3 {
-                x: m.x * v.x,
-                y: m.y * v.y,
-                z: m.z * v.z,
-            };
-            let lit = e + mul(a, global) + mul(a, sums.ambient) + mul(d, sums.diffuse[i]);
-            let specular = mul(s, sums.specular[i]);
-            if prepared.separate_specular {
-                emit(lit, alpha);
-                emit(specular, one);
-            } else {
-                emit(lit + specular, alpha);
-            }
+        let lit = e + mul(a, global) + mul(a, sums.ambient) + mul(d, sums.diffuse);
+        let specular = mul(s, sums.specular);
+        if prepared.separate_specular {
+            [emit(lit, alpha), emit(specular, Pack::splat(T::ONE))]
+        } else {
+            [emit(lit + specular, alpha), [zero; 4]]
         }
-        out
     }
 }
 

@@ -342,24 +342,44 @@ impl<T: Real, const N: usize> Neg for V3<T, N> {
 /// Exact for every finite `v`: when |v|² is subnormal or overflows, `v` is first scaled by an
 /// exact power of two ([`Real::UPSCALE`] or [`Real::DOWNSCALE`]), which changes no direction bit.
 /// Such lanes are rare, so they leave the vector path for a scalar one. The length itself may
-/// round to infinity for |v| beyond the type's range.
+/// round to infinity for |v| beyond the type's range. Each component is divided by the length,
+/// so an axis-aligned vector gives an exact unit vector.
 #[inline(always)]
 pub fn normalize_and_length<T: Real, const N: usize>(v: V3<T, N>) -> (V3<T, N>, Pack<T, N>) {
+    normalize_by::<T, N, true>(v)
+}
+
+/// [`normalize_and_length`] with one division and three products instead of three divisions
+/// (within 1 ulp of it): for the per-light vectors of the kernel, where the vector divider is
+/// the scarcest unit.
+#[inline(always)]
+pub fn normalize_and_length_fast<T: Real, const N: usize>(v: V3<T, N>) -> (V3<T, N>, Pack<T, N>) {
+    normalize_by::<T, N, false>(v)
+}
+
+#[inline(always)]
+fn normalize_by<T: Real, const N: usize, const DIVIDE: bool>(
+    v: V3<T, N>,
+) -> (V3<T, N>, Pack<T, N>) {
     let len2 = v.dot(v);
     let ok = len2.ge(Pack::splat(T::MIN_POSITIVE)) & len2.le(Pack::splat(T::MAX));
     let len = len2.sqrt();
-    let unit = v.div_by(len);
+    let unit = if DIVIDE {
+        v.div_by(len)
+    } else {
+        v.scale(Pack::splat(T::ONE) / len)
+    };
     if ok.all() {
         return (unit, len);
     }
-    rescaled(v, len2, ok, unit, len)
+    rescaled::<T, N, DIVIDE>(v, len2, ok, unit, len)
 }
 
 /// The lanes of [`normalize_and_length`] whose squared length is zero, subnormal, infinite or
 /// NaN, one at a time.
 #[cold]
 #[inline(never)]
-fn rescaled<T: Real, const N: usize>(
+fn rescaled<T: Real, const N: usize, const DIVIDE: bool>(
     v: V3<T, N>,
     len2: Pack<T, N>,
     ok: Mask<N>,
@@ -380,17 +400,23 @@ fn rescaled<T: Real, const N: usize>(
             };
             let (x, y, z) = (x * scale, y * scale, z * scale);
             let l = (x * x + y * y + z * z).sqrt();
-            ([x / l, y / l, z / l], l / scale)
+            let u = if DIVIDE {
+                [x / l, y / l, z / l]
+            } else {
+                let r = T::ONE / l;
+                [x * r, y * r, z * r]
+            };
+            (u, l / scale)
         };
         (unit.x.0[i], unit.y.0[i], unit.z.0[i], len.0[i]) = (u[0], u[1], u[2], l);
     }
     (unit, len)
 }
 
-/// The unit vector in the direction of `v`, or zero (see [`normalize_and_length`]).
+/// The unit vector in the direction of `v`, or zero (see [`normalize_and_length_fast`]).
 #[inline(always)]
-pub fn normalize_or_zero<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
-    normalize_and_length(v).0
+pub fn normalize_or_zero_fast<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
+    normalize_and_length_fast(v).0
 }
 
 #[cfg(test)]

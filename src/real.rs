@@ -8,7 +8,7 @@
 
 use glam::{DVec3, Vec3};
 
-use crate::elementary::{exp_f32, exp_f64, ln_1p_f32, ln_1p_f64, ln_f32, ln_f64};
+use crate::elementary::{exp_f32, exp_f64, ln_1p_f64, ln_1p_le_half_f32, ln_f32, ln_f64};
 use crate::lanes::{Pack, V3};
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
@@ -120,8 +120,8 @@ pub trait Real:
     /// Square root.
     #[must_use]
     fn sqrt(self) -> Self;
-    /// `ln(1 + x)` lane by lane for x > −1, accurate near 0 (see [`crate::elementary`]: within
-    /// 2 ulp in f32, 1 ulp in f64, the same bits on every CPU).
+    /// `ln(1 + x)` lane by lane for x in (−1, ½], accurate near 0 (see [`crate::elementary`]:
+    /// within 2 ulp in f32, 1 ulp in f64, the same bits on every CPU).
     ///
     /// Lane functions take whole arrays and call the scalar function in a plain loop: behind a
     /// closure, LLVM may leave a body this large out of line and scalar.
@@ -191,7 +191,7 @@ impl Real for f32 {
     #[inline(always)]
     fn ln_1p_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
         for v in &mut x {
-            *v = ln_1p_f32(*v);
+            *v = ln_1p_le_half_f32(*v);
         }
         x
     }

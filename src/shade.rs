@@ -39,27 +39,35 @@ struct Task<'a, 'b, T: Real> {
 }
 
 impl<T: Real> Task<'_, '_, T> {
-    /// Loads the block of rows `rows[0..N]` (absolute row numbers).
+    /// Loads the `N` rows starting at row `first` (absolute), or, for a short last block of
+    /// `valid` rows, those rows and copies of its first in the missing lanes (finite, and never
+    /// written back).
     #[inline(always)]
-    fn load<const N: usize>(&self, rows: [usize; N]) -> Block<T, N> {
+    fn load<const N: usize>(&self, first: usize, valid: usize) -> Block<T, N> {
         let Inputs {
             positions,
             normals,
             colors,
         } = self.inputs;
-        let gather = |a: &[[T; 3]]| -> [[T; 3]; N] { build([T::ZERO; 3], |j| a[rows[j]]) };
+        let rows = |a: &[[T; 3]]| -> [[T; 3]; N] {
+            match a[first..].first_chunk::<N>() {
+                Some(full) if valid == N => *full,
+                _ => build([T::ZERO; 3], |j| a[first + if j < valid { j } else { 0 }]),
+            }
+        };
         Block {
             positions: if self.kernel.plan.positions {
-                V3::load(&gather(positions))
+                V3::load(&rows(positions))
             } else {
                 V3::zero()
             },
-            normals: V3::load(&gather(normals)),
+            normals: V3::load(&rows(normals)),
             colors: colors.map(|c| {
                 let channel = |k: usize| {
                     Pack(build(T::ONE, |j| {
+                        let r = first + if j < valid { j } else { 0 };
                         if k < c.width {
-                            c.data[rows[j] * c.width + k]
+                            c.data[r * c.width + k]
                         } else {
                             T::ONE
                         }
@@ -75,26 +83,21 @@ impl<T: Real> LaneWork for Task<'_, '_, T> {
     #[inline(always)]
     fn run<const N: usize>(self) {
         let count = self.planes[0].len() / 4;
+        let per_side = self.planes.len() / self.kernel.prepared.sides;
         let mut start = 0;
         while start < count {
             let valid = N.min(count - start);
-            // A short last block repeats its first row in the missing lanes (finite, and
-            // never written back).
-            let rows = build(0, |j| self.first + start + if j < valid { j } else { 0 });
-            let block = self.load::<N>(rows);
-            let colours = if self.kernel.prepared.sides == 2 {
-                self.kernel.block::<N, 2>(&block)
-            } else {
-                self.kernel.block::<N, 1>(&block)
-            };
-            for (plane, rgba) in self.planes.iter_mut().zip(&colours) {
-                for (j, dst) in plane[4 * start..4 * (start + valid)]
-                    .chunks_exact_mut(4)
-                    .enumerate()
-                {
-                    for (d, c) in dst.iter_mut().zip(rgba) {
-                        *d = c.0[j];
-                    }
+            let block = self.load::<N>(self.first + start, valid);
+            // Planes come side by side: the front's colours, then the back's.
+            for (side, planes) in self.planes.chunks_mut(per_side).enumerate() {
+                let colours = self.kernel.block(&block, side);
+                for (plane, rgba) in planes.iter_mut().zip(&colours) {
+                    // Lanes to rows: one transpose, then one copy.
+                    let rows: [[T; 4]; N] = build([T::ZERO; 4], |j| {
+                        [rgba[0].0[j], rgba[1].0[j], rgba[2].0[j], rgba[3].0[j]]
+                    });
+                    let dst = plane[4 * start..4 * (start + valid)].as_chunks_mut::<4>().0;
+                    dst.copy_from_slice(&rows[..valid]);
                 }
             }
             start += valid;
