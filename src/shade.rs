@@ -38,6 +38,17 @@ struct Task<'a, 'b, T: Real> {
     planes: &'b mut [&'a mut [T]],
 }
 
+/// The `N` rows of `a` from `first` as lanes; a short block of `valid` rows repeats its first.
+#[inline(always)]
+fn rows<T: Real, const N: usize>(a: &[[T; 3]], first: usize, valid: usize) -> V3<T, N> {
+    match a[first..].first_chunk::<N>() {
+        Some(full) if valid == N => V3::load(full),
+        _ => V3::load(&build([T::ZERO; 3], |j| {
+            a[first + if j < valid { j } else { 0 }]
+        })),
+    }
+}
+
 impl<T: Real> Task<'_, '_, T> {
     /// Loads the `N` rows starting at row `first` (absolute), or, for a short last block of
     /// `valid` rows, those rows and copies of its first in the missing lanes (finite, and never
@@ -49,19 +60,14 @@ impl<T: Real> Task<'_, '_, T> {
             normals,
             colors,
         } = self.inputs;
-        let rows = |a: &[[T; 3]]| -> [[T; 3]; N] {
-            match a[first..].first_chunk::<N>() {
-                Some(full) if valid == N => *full,
-                _ => build([T::ZERO; 3], |j| a[first + if j < valid { j } else { 0 }]),
-            }
-        };
+        let rows = |a: &[[T; 3]]| rows::<T, N>(a, first, valid);
         Block {
             positions: if self.kernel.plan.positions {
-                V3::load(&rows(positions))
+                rows(positions)
             } else {
                 V3::zero()
             },
-            normals: V3::load(&rows(normals)),
+            normals: rows(normals),
             colors: colors.map(|c| {
                 let channel = |k: usize| {
                     Pack(build(T::ONE, |j| {
