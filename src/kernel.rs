@@ -192,6 +192,21 @@ fn sat3<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
     }
 }
 
+/// `a += b` component by component with TwoSum, the rounding errors added to `error`.
+#[inline(always)]
+fn two_sum3<T: Real, const N: usize>(a: &mut V3<T, N>, b: V3<T, N>, error: &mut V3<T, N>) {
+    let (x, ex) = sum_exact(a.x, b.x);
+    let (y, ey) = sum_exact(a.y, b.y);
+    let (z, ez) = sum_exact(a.z, b.z);
+    *a = V3 { x, y, z };
+    *error = *error
+        + V3 {
+            x: ex,
+            y: ey,
+            z: ez,
+        };
+}
+
 /// The normal of one side as the equation needs it.
 #[derive(Clone, Copy)]
 struct SideNormal<T, const N: usize> {
@@ -229,6 +244,14 @@ impl<T: Real, const N: usize> Sums<T, N> {
             diffuse: f(self.diffuse),
             specular: f(self.specular),
         }
+    }
+
+    /// `self += o` with TwoSum, the rounding errors added to `error`.
+    #[inline(always)]
+    fn add_exact(&mut self, o: &Self, error: &mut Self) {
+        two_sum3(&mut self.ambient, o.ambient, &mut error.ambient);
+        two_sum3(&mut self.diffuse, o.diffuse, &mut error.diffuse);
+        two_sum3(&mut self.specular, o.specular, &mut error.specular);
     }
 
     #[inline(always)]
@@ -493,11 +516,14 @@ impl<T: Real> Kernel<'_, T> {
         let sums = if lights.len() <= T::SUM_BLOCK {
             self.sums(lights, 0, p, &normal, side, view)
         } else {
-            let mut total = Sums::<f64, N>::zero();
+            // Blocks of SUM_BLOCK lights, added in f64 with their rounding errors kept apart:
+            // the error is SUM_BLOCK ulp of Σ|terms| whatever the light count.
+            let (mut total, mut error) = (Sums::<f64, N>::zero(), Sums::<f64, N>::zero());
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
                 let part = self.sums(chunk, b * T::SUM_BLOCK, p, &normal, side, view);
-                total.add(&part.map(convert::<T, f64, N>));
+                total.add_exact(&part.map(convert::<T, f64, N>), &mut error);
             }
+            total.add(&error);
             total.map(convert::<f64, T, N>)
         };
         let sums = sums.map(sat3);

@@ -27,6 +27,8 @@ pub mod real;
 pub mod render;
 pub mod scene;
 pub mod shade;
+#[cfg(test)]
+mod specialisation_tests;
 mod triangle;
 pub mod visibility;
 

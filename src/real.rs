@@ -107,9 +107,9 @@ pub trait Real:
     const SATURATION: Self;
     /// The magnitude at which light and material colours saturate: 2^60 in f32, 2^240 in f64.
     const COLOR_SATURATION: Self;
-    /// How many lights are summed in this type before the partial sum is added to an `f64`
-    /// total: 8 for `f32` (the sum's error stays 8 ulp of the largest term, whatever the light
-    /// count), unbounded for `f64`.
+    /// How many lights are summed in this type before the partial sum is added to a
+    /// compensated `f64` total: 8, so the sum's error stays 8 ulp of Σ|terms| whatever the
+    /// light count.
     const SUM_BLOCK: usize;
     /// Rounds an `f64` to this type.
     #[must_use]
@@ -226,7 +226,7 @@ impl Real for f64 {
     const DOWNSCALE: Self = f64::from_bits((1023 - 600) << 52);
     const SATURATION: Self = f64::from_bits((1023 + 240) << 52);
     const COLOR_SATURATION: Self = f64::from_bits((1023 + 240) << 52);
-    const SUM_BLOCK: usize = usize::MAX;
+    const SUM_BLOCK: usize = 8;
     #[inline]
     fn from_f64(x: f64) -> Self {
         x

@@ -7,6 +7,7 @@ import sys
 from collections.abc import Sequence
 
 from ._bench import bench_normals, bench_render
+from ._bench_shade import SIZES, bench_shade
 from ._demo import demo
 
 
@@ -27,9 +28,16 @@ def main(argv: Sequence[str] | None = None) -> int:
     bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
     bench.add_argument(
         "what",
-        choices=["normals", "render"],
-        help="normals: vertex and face normals beside trimesh; render: gs.render beside "
-        "moderngl on Mesa's llvmpipe",
+        choices=["shade", "normals", "render"],
+        help="shade: gs.shade beside numpy and numba; normals: vertex and face normals beside "
+        "trimesh; render: gs.render beside moderngl on Mesa's llvmpipe",
+    )
+    bench.add_argument(
+        "--sizes",
+        type=int,
+        nargs="+",
+        default=list(SIZES),
+        help="shade: vertex counts (default 10^4 10^5 10^6 4*10^6)",
     )
     bench.add_argument(
         "--faces", type=int, help="mesh size (default 10^6 for normals, 10^5 for render)"
@@ -47,6 +55,10 @@ def main(argv: Sequence[str] | None = None) -> int:
         parser.error("--repeat must be positive")
     if args.size < 1:
         parser.error("--size must be positive")
+    if args.command == "bench" and args.what == "shade":
+        if min(args.sizes) < 1:
+            parser.error("--sizes must be positive")
+        return bench_shade(tuple(args.sizes), args.repeat)
     if args.command == "bench":
         faces = args.faces or (1_000_000 if args.what == "normals" else 100_000)
         if faces < 2:

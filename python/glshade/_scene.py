@@ -101,6 +101,18 @@ class Lights:
 
     __slots__ = ("_table",)
     _table: Float64Array
+    # The parameters, as read-only properties made from LIGHT_LAYOUT below (one row per light,
+    # or the one light's value for a `Light`); declared here for type checkers.
+    position: Any
+    ambient: Any
+    diffuse: Any
+    specular: Any
+    spot_direction: Any
+    spot_exponent: Any
+    spot_cutoff: Any
+    constant_attenuation: Any
+    linear_attenuation: Any
+    quadratic_attenuation: Any
 
     def __init__(
         self,

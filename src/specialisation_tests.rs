@@ -1,0 +1,233 @@
+//! The specialised kernels against the general one and across instruction sets, bit for bit.
+//!
+//! Every subset of the scene features that choose what the kernel computes (directional and
+//! positional lights, attenuation, spot, local viewer, shininess, specular colour, two-sided
+//! lighting, separate specular, colour material, modelview, `normalize`, Phong, light ambient)
+//! is shaded with [`Plan::new`] and with [`Plan::general`] (every term of every light), with
+//! every instruction set this CPU has; all outputs must have the same bits.
+
+use glam::DMat4;
+
+use crate::dispatch::Isa;
+use crate::light::Light;
+use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::plan::Plan;
+use crate::prepare::{Prepared, ShadeOptions};
+use crate::real::Real;
+use crate::scene::{Scene, Specular};
+use crate::shade::{run, VertexColors};
+
+const FEATURES: u32 = 14;
+
+/// A deterministic stream of numbers in [-1, 1) (a 64-bit LCG; no dependency).
+struct Numbers(u64);
+
+impl Numbers {
+    fn next(&mut self) -> f64 {
+        self.0 = self
+            .0
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+
+    fn vec3(&mut self, scale: f64) -> [f64; 3] {
+        [
+            self.next() * scale,
+            self.next() * scale,
+            self.next() * scale,
+        ]
+    }
+}
+
+/// The scene and options of feature subset `bits` (bit k on = feature k present).
+fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
+    let on = |k: u32| bits >> k & 1 == 1;
+    let ambient = if on(13) {
+        [0.1, 0.05, 0.2, 1.0]
+    } else {
+        [0.0, 0.0, 0.0, 1.0]
+    };
+    let mut lights = Vec::new();
+    if on(0) {
+        lights.push(Light {
+            position: [0.3, 0.5, 1.0, 0.0],
+            ambient,
+            ..Light::default()
+        });
+        // With an infinite viewer ĥ is a constant; the spot of a directional light is too.
+        lights.push(Light {
+            position: [-1.0, 0.2, 0.4, 0.0],
+            diffuse: [0.5, 0.3, 0.2, 1.0],
+            specular: [0.0; 4],
+            spot_cutoff: 80.0,
+            ..Light::default()
+        });
+    }
+    if on(1) {
+        let (k, cutoff) = (
+            if on(2) {
+                [0.5, 0.3, 0.2]
+            } else {
+                [1.0, 0.0, 0.0]
+            },
+            if on(3) { 60.0 } else { 180.0 },
+        );
+        for position in [[1.0, 2.0, 1.0, 1.0], [0.25, -0.5, 1.5, 0.5]] {
+            lights.push(Light {
+                position,
+                ambient,
+                constant_attenuation: k[0],
+                linear_attenuation: k[1],
+                quadratic_attenuation: k[2],
+                spot_cutoff: cutoff,
+                spot_direction: [-0.5, -1.0, -0.5],
+                spot_exponent: 3.0,
+                ..Light::default()
+            });
+        }
+    }
+    let material = Material {
+        specular: if on(6) {
+            [0.6, 0.5, 0.4, 1.0]
+        } else {
+            [0.0, 0.0, 0.0, 1.0]
+        },
+        shininess: if on(5) { 20.0 } else { 0.0 },
+        emission: [0.05, 0.0, 0.1, 1.0],
+        ..Material::default()
+    };
+    let scene = Scene {
+        lights,
+        material,
+        back_material: Material {
+            diffuse: [0.2, 0.8, 0.3, 0.5],
+            ..material
+        },
+        viewer: if on(4) {
+            [0.5, 0.0, 2.0, 1.0]
+        } else {
+            [0.0, 0.0, 1.0, 0.0]
+        },
+        two_side: on(7),
+        separate_specular: on(8),
+        specular: if on(12) {
+            Specular::Phong
+        } else {
+            Specular::Blinn
+        },
+        specular_gate: bits.count_ones().is_multiple_of(2),
+        ..Scene::default()
+    };
+    let modes = [
+        ColorMaterialMode::AmbientAndDiffuse,
+        ColorMaterialMode::Specular,
+        ColorMaterialMode::Emission,
+        ColorMaterialMode::Diffuse,
+        ColorMaterialMode::Ambient,
+    ];
+    let options = ShadeOptions {
+        modelview: on(10).then(|| {
+            DMat4::from_cols_array(&[
+                0.8, 0.1, -0.2, 0.0, -0.1, 1.3, 0.3, 0.0, 0.2, -0.2, 0.7, 0.0, 0.1, -0.3, -2.0, 1.0,
+            ])
+        }),
+        normalize: on(11),
+        color_material: on(9).then(|| ColorMaterial {
+            mode: modes[(bits as usize / 7) % modes.len()],
+            face: [Face::FrontAndBack, Face::Front, Face::Back][bits as usize % 3],
+        }),
+        ..ShadeOptions::default()
+    };
+    (scene, options)
+}
+
+/// Vertices around the lights: random rows, and the awkward ones (a zero normal, a non-unit
+/// normal, a vertex at a light, NaN rows), 37 in all so the last block is short.
+fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
+    let mut numbers = Numbers(7);
+    let mut positions: Vec<[f64; 3]> = (0..37).map(|_| numbers.vec3(2.0)).collect();
+    let mut normals: Vec<[f64; 3]> = (0..37).map(|_| numbers.vec3(1.0)).collect();
+    let colors: Vec<f64> = (0..37 * 4).map(|_| numbers.next().abs()).collect();
+    normals[3] = [0.0; 3];
+    normals[4] = [0.0, 0.0, 3.0];
+    positions[5] = [1.0, 2.0, 1.0];
+    positions[6] = [f64::NAN, 0.0, 0.0];
+    normals[7] = [0.0, f64::INFINITY, 0.0];
+    let cast = |rows: Vec<[f64; 3]>| rows.into_iter().map(|r| r.map(T::from_f64)).collect();
+    (
+        cast(positions),
+        cast(normals),
+        colors.into_iter().map(T::from_f64).collect(),
+    )
+}
+
+/// The output bits of `plan` (new or general) on `isa`.
+fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
+    let (scene, options) = scene_of(bits);
+    let (positions, normals, colors) = vertices::<T>();
+    let prepared = Prepared::<T>::new(&scene, &options).unwrap();
+    let plan = if general {
+        Plan::general(&prepared)
+    } else {
+        Plan::new(&prepared)
+    };
+    let colors = options.color_material.map(|_| VertexColors {
+        data: &colors[..],
+        width: 4,
+    });
+    let mut out = vec![T::ZERO; scene.output_count() * 4 * normals.len()];
+    run(
+        &prepared, &plan, isa, &positions, &normals, colors, &mut out,
+    );
+    out.iter().map(|x| x.to_f64().to_bits()).collect()
+}
+
+fn check_every_subset<T: Real>() {
+    let isas: Vec<Isa> = Isa::ALL.into_iter().filter(|i| i.supported()).collect();
+    for bits in 0..1 << FEATURES {
+        let reference = shade_bits::<T>(bits, true, Isa::Baseline);
+        for &isa in &isas {
+            for general in [false, true] {
+                assert!(
+                    shade_bits::<T>(bits, general, isa) == reference,
+                    "features {bits:#016b}: plan {} on {} differs from the general plan on \
+                     baseline",
+                    if general { "general" } else { "new" },
+                    isa.name(),
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn specialised_kernels_match_the_general_one_bit_for_bit_f32() {
+    check_every_subset::<f32>();
+}
+
+#[test]
+fn specialised_kernels_match_the_general_one_bit_for_bit_f64() {
+    check_every_subset::<f64>();
+}
+
+#[test]
+fn the_subsets_reach_every_plan_flag() {
+    // The test is only as good as its scenes: each flag is both on and off somewhere.
+    let plans: Vec<Plan> = (0..1 << FEATURES)
+        .map(|bits| {
+            let (scene, options) = scene_of(bits);
+            Plan::new(&Prepared::<f32>::new(&scene, &options).unwrap())
+        })
+        .collect();
+    let both = |f: &dyn Fn(&Plan) -> bool| plans.iter().any(f) && !plans.iter().all(f);
+    assert!(both(&|p| p.positions));
+    assert!(both(&|p| p.unit_normal));
+    assert!(both(&|p| p.normal_length));
+    assert!(both(&|p| p.view));
+    assert!(both(&|p| p.sides[0].power));
+    assert!(both(&|p| p.sides[1].specular));
+    assert!(both(&|p| p.lights.iter().any(|l| l.ambient)));
+    assert!(both(&|p| p.lights.iter().any(|l| l.attenuated)));
+    assert!(both(&|p| p.lights.iter().any(|l| l.specular)));
+}
