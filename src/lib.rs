@@ -22,6 +22,8 @@ mod pages;
 pub mod passes;
 pub mod plan;
 pub mod prepare;
+#[cfg(test)]
+mod property_tests;
 pub mod raster;
 pub mod real;
 pub mod render;

@@ -170,3 +170,79 @@ def test_normals_never_panic_and_are_unit_zero_or_nan(
         lengths = np.linalg.norm(normals.astype(np.float64), axis=1)
         ok = np.isnan(lengths) | (lengths == 0) | (np.abs(lengths - 1) < 1e-5)
         assert ok.all(), normals[~ok]
+
+
+@settings(deadline=None)
+@given(
+    dtype=DTYPES,
+    scene=scenes(),
+    axis=st.integers(0, 2),
+    p=hnp.arrays(np.float64, (8, 3), elements=st.floats(-5, 5)),
+    nrm=hnp.arrays(np.float64, (8, 3), elements=st.floats(-1, 1)),
+    normalize=st.booleans(),
+)
+def test_mirroring_the_scene_changes_no_bit(
+    dtype: Any, scene: gs.Scene, axis: int, p: np.ndarray, nrm: np.ndarray, normalize: bool
+) -> None:
+    # Negating one coordinate of everything (positions, normals, lights, spot directions, the
+    # viewer) negates both factors of every product in every dot product: the same bits.
+    flip = np.ones(3)
+    flip[axis] = -1.0
+    lights = scene.lights.table.copy()
+    lights[:, 0:3] *= flip  # position xyz
+    lights[:, 16:19] *= flip  # spot direction
+    viewer = scene.viewer.copy()
+    viewer[:3] *= flip
+    mirrored = gs.Scene(
+        lights=gs.Lights._from_table(lights),
+        material=scene.material,
+        viewer=viewer,
+        two_side=scene.two_side,
+        separate_specular=scene.separate_specular,
+        specular=scene.specular,
+    )
+    p, nrm = p.astype(dtype), nrm.astype(dtype)
+    np.testing.assert_array_equal(
+        gs.shade(p * flip.astype(dtype), nrm * flip.astype(dtype), mirrored, normalize=normalize),
+        gs.shade(p, nrm, scene, normalize=normalize),
+    )
+
+
+THREADS_SCRIPT = """
+import hashlib, sys, numpy as np, glshade as gs
+rng = np.random.default_rng(3)
+n = 300_000
+p = rng.normal(size=(n, 3)) * 3
+nrm = rng.normal(size=(n, 3))
+p[::9973] = np.nan
+lights = gs.Lights(
+    position=np.c_[rng.normal(size=(20, 3)) * 4, rng.integers(0, 2, 20)],
+    diffuse=rng.uniform(0, 0.2, (20, 3)),
+    specular=rng.uniform(0, 0.2, (20, 3)),
+    linear_attenuation=rng.uniform(0, 1, 20),
+)
+scene = gs.Scene(lights, material=gs.Material(specular=(0.5, 0.5, 0.5), shininess=40),
+                 viewer=(0, 0, 0, 1), two_side=True)
+digest = hashlib.sha256()
+for dtype in (np.float32, np.float64):
+    for accuracy in ("fast", "exact"):
+        digest.update(gs.shade(p.astype(dtype), nrm.astype(dtype), scene, accuracy=accuracy))
+print(digest.hexdigest())
+"""
+
+
+def test_results_do_not_depend_on_the_thread_count() -> None:
+    # rayon's pool size is fixed per process: one process per count, the same bits from each.
+    import os
+    import subprocess
+    import sys
+
+    digests = set()
+    for threads in ("1", "2", "3", "8"):
+        env = {**os.environ, "RAYON_NUM_THREADS": threads}
+        run = subprocess.run(
+            [sys.executable, "-c", THREADS_SCRIPT], env=env, capture_output=True, text=True
+        )
+        assert run.returncode == 0, run.stderr
+        digests.add(run.stdout.strip())
+    assert len(digests) == 1, digests

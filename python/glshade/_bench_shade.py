@@ -150,6 +150,9 @@ def numpy_shade(positions: F32, normals: F32, scene: gs.Scene) -> F32:
 def numba_shade() -> Callable[[F32, F32, gs.Scene], F32] | str:
     """The same equation as `numpy_shade`, compiled by numba with ``parallel=True``, float32
     throughout; or why numba is not available."""
+    # numba's OpenMP threads spin after each parallel loop unless told to sleep, and on a
+    # machine with few cores they would take them from whichever method runs next.
+    os.environ.setdefault("OMP_WAIT_POLICY", "PASSIVE")
     try:
         import numba
     except ImportError:
@@ -235,7 +238,10 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
     else:
         import numba as nb
 
-        print(f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads)")
+        print(
+            f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads, "
+            f"{nb.threading_layer()} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
+        )
     print(f"per-call overhead: {call_overhead() * 1e6:.1f} us (16 vertices, one light, median)")
     for name, scene in bench_scenes().items():
         print(f"\n{name}: {scene.plan()}")
