@@ -9,6 +9,7 @@ from collections.abc import Sequence
 from ._bench import bench_normals, bench_render
 from ._bench_shade import SIZES, bench_shade
 from ._demo import demo
+from ._report import report
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -24,6 +25,16 @@ def main(argv: Sequence[str] | None = None) -> int:
         default="glshade-demo.png",
         help="PNG path of the shaded sphere (default ./glshade-demo.png); the renders go beside "
         "it with -flat, -gouraud and -phong added to the name",
+    )
+    rep = commands.add_parser(
+        "report", help="error against run time of every accuracy mode and dtype, with studies"
+    )
+    rep.add_argument("--vertices", type=int, default=200_000, help="per scene (default 2*10^5)")
+    rep.add_argument("--repeat", type=int, default=7, help="timed calls per row (default 7)")
+    rep.add_argument(
+        "--output",
+        default="glshade-report.md",
+        help="Markdown path (default ./glshade-report.md); the plot goes beside it as .png",
     )
     bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
     bench.add_argument(
@@ -53,8 +64,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.repeat < 1:
         parser.error("--repeat must be positive")
-    if args.size < 1:
+    if getattr(args, "size", 1) < 1:
         parser.error("--size must be positive")
+    if args.command == "report":
+        if args.vertices < 1:
+            parser.error("--vertices must be positive")
+        return report(args.vertices, args.repeat, args.output)
     if args.command == "bench" and args.what == "shade":
         if min(args.sizes) < 1:
             parser.error("--sizes must be positive")

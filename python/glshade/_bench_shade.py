@@ -238,9 +238,10 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
     else:
         import numba as nb
 
+        layer = nb.threading_layer()  # type: ignore[attr-defined]
         print(
             f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads, "
-            f"{nb.threading_layer()} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
+            f"{layer} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
         )
     print(f"per-call overhead: {call_overhead() * 1e6:.1f} us (16 vertices, one light, median)")
     for name, scene in bench_scenes().items():
