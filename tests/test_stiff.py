@@ -344,3 +344,20 @@ def test_nan_and_inf_rows_stay_in_their_rows(dtype: type, accuracy: str, bad: fl
                 assert np.array_equal(got[row], clean[name][row])
             else:
                 assert np.isnan(got[row]).all(), (array, name)
+
+
+# --- exponents beyond GL's range ----------------------------------------------------------------
+
+
+def test_strict_rejects_exponents_above_128_and_the_default_allows_them(
+    dtype: type, accuracy: str
+) -> None:
+    p, n = np.zeros((1, 3), dtype), np.array([[0, 0, 1]], dtype)
+    high = gs.Scene([gs.Light()], material=gs.Material(specular=(1, 1, 1), shininess=1e4))
+    spot = gs.Scene([gs.Light(position=(0, 0, 1, 1), spot_cutoff=30, spot_exponent=200)])
+    for scene, name in ((high, "shininess"), (spot, "spot_exponent")):
+        with pytest.raises(ValueError, match=name):
+            gs.shade(p, n, scene, accuracy=accuracy, strict=True)
+        assert np.isfinite(gs.shade(p, n, scene, accuracy=accuracy)).all()
+    edge = gs.Scene([gs.Light()], material=gs.Material(specular=(1, 1, 1), shininess=128))
+    assert np.isfinite(gs.shade(p, n, edge, accuracy=accuracy, strict=True)).all()
