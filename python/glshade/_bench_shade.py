@@ -74,10 +74,10 @@ def bench_vertices(n: int, seed: int = 0) -> tuple[F32, F32]:
     return positions, normals.astype(np.float32)
 
 
-def _light_table(scene: gs.Scene) -> F32:
-    """One float32 row per light: position xyz w (directional ones normalised), the products
-    a_cm·a_cl, d_cm·d_cl, s_cm·s_cl (RGB), the unit spot direction, spot exponent, cos cutoff
-    (-2 for no cone), k0, k1, k2."""
+def _light_table(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
+    """One row per light, computed in float64 and rounded to `dtype`: position xyz w
+    (directional ones normalised), the products a_cm·a_cl, d_cm·d_cl, s_cm·s_cl (RGB), the
+    unit spot direction, spot exponent, cos cutoff (-2 for no cone), k0, k1, k2."""
     lights, m = scene.lights, scene.material
     position = lights.position.copy()
     directional = position[:, 3] == 0
@@ -100,19 +100,33 @@ def _light_table(scene: gs.Scene) -> F32:
             lights.quadratic_attenuation,
         ]
     )
-    return table.astype(np.float32)
+    return table.astype(dtype)
 
 
-def _constants(scene: gs.Scene) -> F32:
+def _constants(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
     """emission + a_cm·a_cs (RGB), the diffuse alpha, the shininess, the viewer (xyzw)."""
     m = scene.material
     base = m.emission[:3] + m.ambient[:3] * scene.global_ambient[:3]
-    return np.concatenate([base, [m.diffuse[3], m.shininess], scene.viewer]).astype(np.float32)
+    return np.concatenate([base, [m.diffuse[3], m.shininess], scene.viewer]).astype(dtype)
 
 
-def numpy_shade(positions: F32, normals: F32, scene: gs.Scene) -> F32:
-    """The GL equation (Blinn, GL's specular gate, no two-sided lighting) in float32 numpy."""
-    table, k = _light_table(scene), _constants(scene)
+def naive_power(normals: NDArray[Any], h: NDArray[Any], s: Any) -> NDArray[Any]:
+    """max(n . h, 0)^s, as a shader writes it."""
+    power: NDArray[Any] = np.maximum(np.einsum("ij,ij->i", normals, h), 0)[:, None] ** s
+    return power
+
+
+def numpy_shade(
+    positions: NDArray[Any],
+    normals: NDArray[Any],
+    scene: gs.Scene,
+    power: Callable[[NDArray[Any], NDArray[Any], Any], Any] = naive_power,
+) -> NDArray[Any]:
+    """The GL equation (Blinn, GL's specular gate, no two-sided lighting) in numpy, in the
+    dtype of `positions` (float32 for the benchmark), with `power(n, h, s)` the specular
+    power for s > 0."""
+    dtype = positions.dtype
+    table, k = _light_table(scene, dtype), _constants(scene, dtype)
     local = k[8] != 0
     if local:
         view = k[5:8] - positions
@@ -123,7 +137,7 @@ def numpy_shade(positions: F32, normals: F32, scene: gs.Scene) -> F32:
     for row in table:
         if row[3] == 0:
             vp = np.broadcast_to(row[:3], positions.shape)
-            weight = np.float32(1.0)
+            weight = dtype.type(1.0)
         else:
             vp = row[:3] - positions
             d = np.linalg.norm(vp, axis=1, keepdims=True)
@@ -138,10 +152,9 @@ def numpy_shade(positions: F32, normals: F32, scene: gs.Scene) -> F32:
         rgb += np.where(lit, weight * n_dot_vp, 0) * row[7:10]
         h = vp + view
         h /= np.linalg.norm(h, axis=1, keepdims=True)
-        n_dot_h = np.maximum(np.einsum("ij,ij->i", normals, h), 0)[:, None]
-        power = n_dot_h ** k[4] if k[4] != 0 else np.float32(1.0)
-        rgb += np.where(lit, weight * power, 0) * row[10:13]
-    out = np.zeros((len(positions), 4), np.float32)
+        specular = power(normals, h, k[4]) if k[4] != 0 else dtype.type(1.0)
+        rgb += np.where(lit, weight * specular, 0) * row[10:13]
+    out = np.zeros((len(positions), 4), dtype)
     out[:, :3] = np.clip(rgb, 0, 1)
     out[:, 3] = np.clip(k[3], 0, 1)
     return out

@@ -20,7 +20,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import NDArray
 
-from ._bench_shade import _constants, _light_table, bench_scenes, bench_vertices
+from ._bench_shade import bench_scenes, bench_vertices, numpy_shade
 from ._png import write_png
 from ._scene import Light, Material, Scene
 from ._shade import shade
@@ -63,63 +63,22 @@ def report_vertices(name: str, n: int) -> tuple[NDArray[np.float64], NDArray[np.
     return p.astype(np.float64), np.asarray(normals, np.float64)
 
 
-def _unit(v: NDArray[Any]) -> NDArray[Any]:
-    length = np.sqrt(np.einsum("ij,ij->i", v, v))[:, None]
-    out: NDArray[Any] = np.divide(v, length, out=np.zeros_like(v), where=length > 0)
+def stable_power(normals: NDArray[Any], h: NDArray[Any], s: Any) -> NDArray[Any]:
+    """(n . h)^s = |n|^s (1 - x)^s with x = |n^ - h|^2 / 2, which has no cancellation near the
+    highlight: exp(s (log1p(-x) + log |n|)), 0 where n . h <= 0."""
+    length = np.sqrt(np.einsum("ij,ij->i", normals, normals))[:, None]
+    d = normals / length - h
+    x = np.einsum("ij,ij->i", d, d)[:, None] / 2
+    with np.errstate(divide="ignore"):  # x = 1: log 0, then masked
+        power = np.exp(s * (np.log1p(-np.minimum(x, 1)) + np.log(length)))
+    out: NDArray[Any] = np.where(x < 1, power, 0)
     return out
 
 
 def reference_shade(p: NDArray[Any], n: NDArray[Any], scene: Scene) -> NDArray[np.float64]:
-    """The GL equation (Blinn, GL's gate, one side) in long double for the report's scenes."""
-    p, n = p.astype(LD), n.astype(LD)
-    table, k = _light_table(scene).astype(LD), _constants(scene).astype(LD)
-    # The table is float32 for the baselines: take the scene's float64 values instead.
-    lights, m = scene.lights, scene.material
-    table[:, :4] = lights.position
-    directional = table[:, 3] == 0
-    table[directional, :3] = _unit(table[directional, :3])
-    table[~directional, :3] /= table[~directional, 3:4]
-    table[:, 4:7] = lights.ambient[:, :3] * m.ambient[:3]
-    table[:, 7:10] = lights.diffuse[:, :3] * m.diffuse[:3]
-    table[:, 10:13] = lights.specular[:, :3] * m.specular[:3]
-    table[:, 13:16] = _unit(np.asarray(lights.spot_direction, LD))
-    cutoff = lights.spot_cutoff
-    table[:, 17] = np.where(cutoff == 180, -2, np.cos(np.radians(np.asarray(cutoff, LD))))
-    table[:, 16], table[:, 18:21] = (
-        lights.spot_exponent,
-        np.c_[lights.constant_attenuation, lights.linear_attenuation, lights.quadratic_attenuation],
-    )
-    k[:3] = m.emission[:3] + m.ambient[:3] * scene.global_ambient[:3]
-    k[5:9] = scene.viewer
-    s = LD(m.shininess)
-    view = _unit(k[5:8] - p) if k[8] != 0 else np.broadcast_to(_unit(k[None, 5:8]), p.shape)
-    n_hat, n_len = _unit(n), np.sqrt(np.einsum("ij,ij->i", n, n))[:, None]
-    rgb = np.broadcast_to(k[:3], p.shape).copy()
-    for row in table:
-        if row[3] == 0:
-            vp, weight = np.broadcast_to(row[:3], p.shape), LD(1)
-        else:
-            vp = row[:3] - p
-            d = np.sqrt(np.einsum("ij,ij->i", vp, vp))[:, None]
-            vp = vp / d
-            weight = 1 / (row[18] + row[19] * d + row[20] * d * d)
-            if row[17] > -2:
-                c = -(vp @ row[13:16])[:, None]
-                weight = weight * np.where(c >= row[17], np.maximum(c, 0) ** row[16], 0)
-        n_dot_vp = np.einsum("ij,ij->i", n, vp)[:, None]
-        lit = n_dot_vp > 0
-        h = _unit(vp + view)
-        x = np.einsum("ij,ij->i", n_hat - h, n_hat - h)[:, None] / 2
-        cos = 1 - x
-        if s:
-            with np.errstate(divide="ignore"):  # cos <= 0: log 0, then masked
-                power = np.exp(s * (np.log1p(-np.minimum(x, LD(1))) + np.log(n_len)))
-            power = np.where(cos > 0, power, 0)
-        else:
-            power = LD(1)
-        rgb += weight * row[4:7] + np.where(lit, weight * n_dot_vp, 0) * row[7:10]
-        rgb += np.where(lit, weight * power, 0) * row[10:13]
-    return np.clip(rgb, 0, 1).astype(np.float64)
+    """The GL equation (Blinn, GL's gate, one side) in long double with the stable power."""
+    rgb = numpy_shade(p.astype(LD), n.astype(LD), scene, power=stable_power)[:, :3]
+    return rgb.astype(np.float64)
 
 
 def _median_seconds(call: Any, repeat: int) -> float:
