@@ -1,30 +1,86 @@
 //! The instruction set the kernels run with, chosen at run time so one build uses AVX-512 or
 //! AVX2 where the CPU has them and SSE2 (or the target's baseline) elsewhere.
 //!
-//! The kernels are written once over lane arrays (`crate::lanes`); here the same code is
-//! compiled three times, inside functions with different `#[target_feature]`s. Every lane runs
-//! the same IEEE operations, so every instruction set gives the same bits (a test checks it).
+//! The kernels are written once over [`Lanes`]; an [`InstructionSet`] names the register types
+//! they are instantiated with (16 `f32` or 8 `f64` lanes with AVX-512, 8 or 4 with AVX2, 4 or 2
+//! with SSE2), and the work runs inside a function compiled with that set's target features.
+//! Every lane runs the same IEEE operations, so every instruction set gives the same bits (a
+//! test checks it).
 //!
-//! Blocks are [`LANES`] = 16 vertices for both `f32` and `f64` and every instruction set, also
-//! where that is two or four vector registers: with 8 lanes LLVM fully unrolls the lane loops
-//! of the elementary functions before its loop vectoriser runs, and the straight-line code that
-//! remains stays scalar in a kernel this size (measured: `exp` and `ln` scalar in the 8-lane
-//! `f64` and AVX2 `f32` kernels, vector with 16 lanes).
-//!
-//! This is the crate's only `unsafe`: calling a `#[target_feature]` function is sound only on a
-//! CPU with those features, which [`Isa::detect`] has checked.
+//! This and `lanes::x86` are the crate's only `unsafe`: calling a `#[target_feature]` function
+//! is sound only on a CPU with those features, which [`Isa::supported`] has checked.
 #![allow(unsafe_code)]
 
 use std::sync::OnceLock;
 
-/// Vertices per block.
-pub const LANES: usize = 16;
+use crate::lanes::Lanes;
 
-/// A work item that runs with `N` lanes; `run` must be `#[inline(always)]` so that its whole
-/// body is compiled with the caller's target features.
+/// The register types of one instruction set.
+pub trait InstructionSet {
+    /// Lanes of `f32`.
+    type F32: Lanes<T = f32>;
+    /// Lanes of `f64`.
+    type F64: Lanes<T = f64>;
+}
+
+/// SSE2, the x86-64 baseline.
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Sse2;
+
+#[cfg(target_arch = "x86_64")]
+impl InstructionSet for Sse2 {
+    type F32 = crate::lanes::x86::F32x4;
+    type F64 = crate::lanes::x86::F64x2;
+}
+
+/// AVX2 with FMA.
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Avx2;
+
+#[cfg(target_arch = "x86_64")]
+impl InstructionSet for Avx2 {
+    type F32 = crate::lanes::x86::F32x8;
+    type F64 = crate::lanes::x86::F64x4;
+}
+
+/// AVX-512 F, BW, DQ and VL.
+#[cfg(target_arch = "x86_64")]
+pub(crate) struct Avx512;
+
+#[cfg(target_arch = "x86_64")]
+impl InstructionSet for Avx512 {
+    type F32 = crate::lanes::x86::F32x16;
+    type F64 = crate::lanes::x86::F64x8;
+}
+
+/// Arrays for other CPUs, which LLVM vectorises as it can.
+#[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
+pub(crate) struct Portable;
+
+impl InstructionSet for Portable {
+    type F32 = crate::lanes::Pack<f32, 8>;
+    type F64 = crate::lanes::Pack<f64, 4>;
+}
+
+/// One lane: the kernel's formulas applied to single values (the per-call constants).
+pub(crate) struct Scalar;
+
+impl InstructionSet for Scalar {
+    type F32 = crate::lanes::Pack<f32, 1>;
+    type F64 = crate::lanes::Pack<f64, 1>;
+}
+
+/// The baseline set of the target.
+#[cfg(target_arch = "x86_64")]
+type Baseline = Sse2;
+#[cfg(not(target_arch = "x86_64"))]
+type Baseline = Portable;
+
+/// A work item that runs with the register types of an instruction set; `run` must be
+/// `#[inline(always)]` so that its whole body is compiled with the caller's target features.
 pub trait LaneWork {
-    /// Does the work, `N` vertices at a time.
-    fn run<const N: usize>(self);
+    /// Does the work with the registers of `S`.
+    fn run<S: InstructionSet>(self);
 }
 
 /// An instruction-set level of x86-64 (or the baseline of any other target).
@@ -86,7 +142,18 @@ impl Isa {
         })
     }
 
-    /// Runs `work` with [`LANES`] lanes, compiled for this level.
+    /// The lanes per block of `T` at this level: 64 bytes with AVX-512, 32 with AVX2, 16 with
+    /// SSE2.
+    pub fn lanes<T>(self) -> usize {
+        let bytes = match self {
+            Isa::Avx512 => 64,
+            Isa::Avx2 => 32,
+            Isa::Baseline => 16,
+        };
+        bytes / std::mem::size_of::<T>()
+    }
+
+    /// Runs `work` with the registers of this level.
     ///
     /// # Panics
     /// If the CPU does not support the level (callers pass [`Isa::detect`] or a level whose
@@ -95,10 +162,10 @@ impl Isa {
         assert!(self.supported(), "{} is not supported here", self.name());
         match self {
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => unsafe { avx512::<W, LANES>(work) },
+            Isa::Avx512 => unsafe { avx512(work) },
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => unsafe { avx2::<W, LANES>(work) },
-            _ => work.run::<LANES>(),
+            Isa::Avx2 => unsafe { avx2(work) },
+            _ => work.run::<Baseline>(),
         }
     }
 }
@@ -106,12 +173,12 @@ impl Isa {
 // SAFETY (for both): only called from `Isa::run`, after `Isa::supported` confirmed the features.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,avx,fma,bmi1,bmi2,lzcnt")]
-fn avx512<W: LaneWork, const N: usize>(work: W) {
-    work.run::<N>();
+fn avx512<W: LaneWork>(work: W) {
+    work.run::<Avx512>();
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2,avx,fma,bmi1,bmi2,lzcnt")]
-fn avx2<W: LaneWork, const N: usize>(work: W) {
-    work.run::<N>();
+fn avx2<W: LaneWork>(work: W) {
+    work.run::<Avx2>();
 }

@@ -1,6 +1,6 @@
-//! `exp` and `ln_1p` for `f32` and `f64` from IEEE basic operations only, without branches, so
-//! that a loop over lanes vectorises on every instruction set and gives the same bits on all of
-//! them (libm calls do neither).
+//! `exp` and `ln_1p` for `f32` and `f64` from IEEE basic operations and integer operations on
+//! the bits only, without branches, over [`Lanes`]: one definition runs in every register width
+//! and gives the same bits on every CPU (libm calls do neither).
 //!
 //! The algorithms are the classic ones: Cephes `expf` (degree-6 polynomial after reduction by
 //! ln 2, ≤ 2 ulp), fdlibm `exp` (rational form, ≤ 1 ulp), fdlibm `log` (atanh series in
@@ -8,12 +8,10 @@
 //! checked by the tests below.
 
 // Coefficients are quoted as published (Cephes, fdlibm); the bit manipulation is on purpose.
-#![allow(
-    clippy::excessive_precision,
-    clippy::unreadable_literal,
-    clippy::cast_sign_loss,
-    clippy::cast_possible_wrap
-)]
+#![allow(clippy::excessive_precision, clippy::unreadable_literal)]
+
+use crate::lanes::{LaneBits, Lanes};
+use crate::real::Real;
 
 /// 1.5 · 2^23: `x + MAGIC − MAGIC` rounds an `f32` to the nearest integer (|x| < 2^22), and the
 /// low bits of `x + MAGIC` hold that integer.
@@ -21,22 +19,37 @@ const MAGIC_F32: f32 = 12_582_912.0;
 /// 1.5 · 2^52, the same for `f64`.
 const MAGIC_F64: f64 = 6_755_399_441_055_744.0;
 
-/// 2^k for an integer `k` in [−126, 127].
+/// 2^k for integers `k` in [−126, 127], given as the two's complement bits of `k`.
 #[inline(always)]
-fn pow2_f32(k: i32) -> f32 {
-    f32::from_bits(((k + 127) as u32) << 23)
+fn pow2_f32<V: Lanes<T = f32>>(k: V::Bits) -> V {
+    V::from_bits((k + V::Bits::splat(127)).shl(23))
 }
 
-/// 2^k for an integer `k` in [−1022, 1023].
+/// 2^k for integers `k` in [−1022, 1023], given as the two's complement bits of `k`.
 #[inline(always)]
-fn pow2_f64(k: i64) -> f64 {
-    f64::from_bits(((k + 1023) as u64) << 52)
+fn pow2_f64<V: Lanes<T = f64>>(k: V::Bits) -> V {
+    V::from_bits((k + V::Bits::splat(1023)).shl(52))
+}
+
+/// ⌊k/2⌋ for the two's complement bits of an integer k ≥ −`bias`, `bias` a power of two: a
+/// logical shift of the biased k (no instruction set here has a 64-bit arithmetic shift).
+#[inline(always)]
+fn half<B: LaneBits>(k: B, bias: u64) -> B {
+    (k + B::splat(bias)).shr(1) - B::splat(bias / 2)
+}
+
+/// `p · 2^k` for the bits of an integer `k` the caller keeps within two steps of the exponent
+/// range, so k from −150 to 128 (`f32`) needs no special case.
+#[inline(always)]
+fn scale_f32<V: Lanes<T = f32>>(p: V, k: V::Bits) -> V {
+    let h = half(k, 256);
+    p * pow2_f32::<V>(h) * pow2_f32::<V>(k - h)
 }
 
 /// `e^x` in `f32`, within 2 ulp for results in the normal range; 0 below −103.97 (the result
 /// would be below the smallest subnormal), +inf above 88.73, NaN for NaN.
 #[inline(always)]
-pub fn exp_f32(x: f32) -> f32 {
+pub fn exp_f32<V: Lanes<T = f32>>(x: V) -> V {
     const LOG2E: f32 = std::f32::consts::LOG2_E;
     const C1: f32 = 0.693_359_375; // ln 2 split so that k·C1 is exact
     const C2: f32 = -2.121_944_4e-4;
@@ -50,29 +63,28 @@ pub fn exp_f32(x: f32) -> f32 {
     ];
     const LO: f32 = -103.972_08;
     const HI: f32 = 88.722_84;
+    let c = V::splat;
     let t = x.clamp(LO, HI);
-    let biased = t * LOG2E + MAGIC_F32;
-    let kf = biased - MAGIC_F32;
-    let k = biased.to_bits().wrapping_sub(MAGIC_F32.to_bits()) as i32;
-    let r = (t - kf * C1) - kf * C2;
-    let p =
-        (((((P[0] * r + P[1]) * r + P[2]) * r + P[3]) * r + P[4]) * r + P[5]) * (r * r) + r + 1.0;
-    // 2^k in two exact steps, so k from −150 to 128 needs no special case.
-    let half = k >> 1;
-    let y = p * pow2_f32(half) * pow2_f32(k - half);
-    if x < LO {
-        0.0
-    } else if x > HI {
-        f32::INFINITY
-    } else {
-        y
-    }
+    let biased = t * c(LOG2E) + c(MAGIC_F32);
+    let kf = biased - c(MAGIC_F32);
+    let k = biased.to_bits() - V::Bits::splat(MAGIC_F32.to_bits().into());
+    let r = (t - kf * c(C1)) - kf * c(C2);
+    let p = (((((c(P[0]) * r + c(P[1])) * r + c(P[2])) * r + c(P[3])) * r + c(P[4])) * r + c(P[5]))
+        * (r * r)
+        + r
+        + c(1.0);
+    let y = scale_f32(p, k);
+    V::select(
+        x.lt(c(LO)),
+        c(0.0),
+        V::select(x.gt(c(HI)), c(f32::INFINITY), y),
+    )
 }
 
 /// `e^x` in `f64`, within 1 ulp for results in the normal range; 0 below −745.14, +inf above
 /// 709.79, NaN for NaN.
 #[inline(always)]
-pub fn exp_f64(x: f64) -> f64 {
+pub fn exp_f64<V: Lanes<T = f64>>(x: V) -> V {
     const INV_LN2: f64 = std::f64::consts::LOG2_E;
     const LN2_HI: f64 = 6.931_471_803_691_238_164_90e-1;
     const LN2_LO: f64 = 1.908_214_929_270_587_700_02e-10;
@@ -85,32 +97,33 @@ pub fn exp_f64(x: f64) -> f64 {
     ];
     const LO: f64 = -745.133_219_101_941_2;
     const HI: f64 = 709.782_712_893_384;
+    let c = V::splat;
     let t = x.clamp(LO, HI);
-    let biased = t * INV_LN2 + MAGIC_F64;
-    let kf = biased - MAGIC_F64;
-    let k = biased.to_bits().wrapping_sub(MAGIC_F64.to_bits()) as i64;
-    let hi = t - kf * LN2_HI;
-    let lo = kf * LN2_LO;
+    let biased = t * c(INV_LN2) + c(MAGIC_F64);
+    let kf = biased - c(MAGIC_F64);
+    let k = biased.to_bits() - V::Bits::splat(MAGIC_F64.to_bits());
+    let hi = t - kf * c(LN2_HI);
+    let lo = kf * c(LN2_LO);
     let r = hi - lo;
     let r2 = r * r;
-    let c = r - r2 * (P[0] + r2 * (P[1] + r2 * (P[2] + r2 * (P[3] + r2 * P[4]))));
-    let p = 1.0 - ((lo - (r * c) / (2.0 - c)) - hi);
-    let half = k >> 1;
-    let y = p * pow2_f64(half) * pow2_f64(k - half);
-    if x < LO {
-        0.0
-    } else if x > HI {
-        f64::INFINITY
-    } else {
-        y
-    }
+    let poly = c(P[0]) + r2 * (c(P[1]) + r2 * (c(P[2]) + r2 * (c(P[3]) + r2 * c(P[4]))));
+    let cr = r - r2 * poly;
+    let p = c(1.0) - ((lo - (r * cr) / (c(2.0) - cr)) - hi);
+    // 2^k in two exact steps, so k from −1075 to 1024 needs no special case.
+    let h = half(k, 2048);
+    let y = p * pow2_f64::<V>(h) * pow2_f64::<V>(k - h);
+    V::select(
+        x.lt(c(LO)),
+        c(0.0),
+        V::select(x.gt(c(HI)), c(f64::INFINITY), y),
+    )
 }
 
 /// ln(u) + c for a positive normal `u` (Cephes' `logf`): u = 2^k · m with m in [√½, √2),
 /// ln m = f − f²/2 + f³·P(f) for f = m − 1. No division, so it costs no more than a few
 /// multiplications in a vector. `c` is a small correction added with the low-order terms.
 #[inline(always)]
-fn ln_core_f32(u: f32, c: f32) -> f32 {
+fn ln_core_f32<V: Lanes<T = f32>>(u: V, c: V) -> V {
     const LN2_HI: f32 = 0.693_359_375; // ln 2 split so that k·LN2_HI is exact
     const LN2_LO: f32 = -2.121_944_4e-4;
     const P: [f32; 9] = [
@@ -124,19 +137,26 @@ fn ln_core_f32(u: f32, c: f32) -> f32 {
         -2.499_999_4e-1,
         3.333_333_1e-1,
     ];
-    let ix = u.to_bits().wrapping_add(0x3f80_0000 - 0x3f35_04f3);
-    let dk = ((ix >> 23) as i32 - 0x7f) as f32;
-    let m = f32::from_bits((ix & 0x007f_ffff) + 0x3f35_04f3);
-    let f = m - 1.0;
+    let b = V::Bits::splat;
+    let s = V::splat;
+    let ix = u.to_bits() + b(0x3f80_0000 - 0x3f35_04f3);
+    // The exponent k, exactly, through 2^23 + (ix >> 23) − 2^23 − 127 (at most 9 bits).
+    let dk = V::from_bits(b(0x4b00_0000) | ix.shr(23)) - s(8_388_608.0 + 127.0);
+    let m = V::from_bits((ix & b(0x007f_ffff)) + b(0x3f35_04f3));
+    let f = m - s(1.0);
     let z = f * f;
-    let p = P[1..].iter().fold(P[0], |acc, &k| acc * f + k);
-    let y = p * f * z + (dk * LN2_LO + c) - 0.5 * z;
-    (f + y) + dk * LN2_HI
+    // Horner's rule; a loop, not an iterator with a closure, so it inlines with the lanes.
+    let mut p = s(P[0]);
+    for &k in &P[1..] {
+        p = p * f + s(k);
+    }
+    let y = p * f * z + (dk * s(LN2_LO) + c) - s(0.5) * z;
+    (f + y) + dk * s(LN2_HI)
 }
 
 /// ln(u) + c for a positive normal `u` (fdlibm's `log`, on the high word).
 #[inline(always)]
-fn ln_core_f64(u: f64, c: f64) -> f64 {
+fn ln_core_f64<V: Lanes<T = f64>>(u: V, c: V) -> V {
     const LN2_HI: f64 = 6.931_471_803_691_238_164_90e-1;
     const LN2_LO: f64 = 1.908_214_929_270_587_700_02e-10;
     const LG: [f64; 7] = [
@@ -148,29 +168,32 @@ fn ln_core_f64(u: f64, c: f64) -> f64 {
         1.531_383_769_920_937_332e-1,
         1.479_819_860_511_658_591e-1,
     ];
+    let b = V::Bits::splat;
+    let s = V::splat;
     let bits = u.to_bits();
-    let hx = (bits >> 32).wrapping_add(0x3ff0_0000 - 0x3fe6_a09e);
+    let hx = bits.shr(32) + b(0x3ff0_0000 - 0x3fe6_a09e);
     // The exponent as an exact f64, through 2^52 + e − 2^52 (no integer-to-float instruction).
     let dk =
-        f64::from_bits(0x4330_0000_0000_0000 | (hx >> 20)) - (4_503_599_627_370_496.0 + 1023.0);
-    let m = f64::from_bits((((hx & 0x000f_ffff) + 0x3fe6_a09e) << 32) | (bits & 0xffff_ffff));
-    let f = m - 1.0;
-    let hfsq = 0.5 * f * f;
-    let s = f / (2.0 + f);
-    let z = s * s;
+        V::from_bits(b(0x4330_0000_0000_0000) | hx.shr(20)) - s(4_503_599_627_370_496.0 + 1023.0);
+    let m =
+        V::from_bits(((hx & b(0x000f_ffff)) + b(0x3fe6_a09e)).shl(32) | (bits & b(0xffff_ffff)));
+    let f = m - s(1.0);
+    let hfsq = s(0.5) * f * f;
+    let q = f / (s(2.0) + f);
+    let z = q * q;
     let w = z * z;
-    let t1 = w * (LG[1] + w * (LG[3] + w * LG[5]));
-    let t2 = z * (LG[0] + w * (LG[2] + w * (LG[4] + w * LG[6])));
-    s * (hfsq + (t2 + t1)) + (dk * LN2_LO + c) - hfsq + f + dk * LN2_HI
+    let t1 = w * (s(LG[1]) + w * (s(LG[3]) + w * s(LG[5])));
+    let t2 = z * (s(LG[0]) + w * (s(LG[2]) + w * (s(LG[4]) + w * s(LG[6]))));
+    q * (hfsq + (t2 + t1)) + (dk * s(LN2_LO) + c) - hfsq + f + dk * s(LN2_HI)
 }
 
 /// `ln(1 + x)` in `f32` for x in (−1, f32::MAX], within 2 ulp (also for tiny x).
 #[inline(always)]
-pub fn ln_1p_f32(x: f32) -> f32 {
-    let u = 1.0 + x;
+pub fn ln_1p_f32<V: Lanes<T = f32>>(x: V) -> V {
+    let u = V::splat(1.0) + x;
     // ln(1 + x) = ln u + ln(1 + e/u) with e = x − (u − 1), the rounding error of 1 + x, exact
     // (u − 1 is exact by Sterbenz where it matters).
-    ln_core_f32(u, (x - (u - 1.0)) / u)
+    ln_core_f32(u, (x - (u - V::splat(1.0))) / u)
 }
 
 /// `ln(1 + x)` in `f32` for x in (−1, ½], within 2 ulp, without a division: the kernel's
@@ -179,65 +202,159 @@ pub fn ln_1p_f32(x: f32) -> f32 {
 /// The correction e/u of [`ln_1p_f32`] becomes e·(2 − u), which is within (1 − u)²/u of it: a
 /// quarter of a term below 2^-25 at worst (u = ½; for u ≤ ½ the sum 1 + x is exact and e = 0).
 #[inline(always)]
-pub fn ln_1p_le_half_f32(x: f32) -> f32 {
-    let u = 1.0 + x;
-    ln_core_f32(u, (x - (u - 1.0)) * (2.0 - u))
+pub fn ln_1p_le_half_f32<V: Lanes<T = f32>>(x: V) -> V {
+    let u = V::splat(1.0) + x;
+    ln_core_f32(u, (x - (u - V::splat(1.0))) * (V::splat(2.0) - u))
 }
 
 /// `ln(1 + x)` in `f64` for x in (−1, f64::MAX], within 1 ulp (also for tiny x).
 #[inline(always)]
-pub fn ln_1p_f64(x: f64) -> f64 {
-    let u = 1.0 + x;
-    ln_core_f64(u, (x - (u - 1.0)) / u)
+pub fn ln_1p_f64<V: Lanes<T = f64>>(x: V) -> V {
+    let u = V::splat(1.0) + x;
+    ln_core_f64(u, (x - (u - V::splat(1.0))) / u)
+}
+
+/// The argument of the core logarithm for `ln x`: subnormal x lifted by `lift` = 2^k into the
+/// range of its bit manipulation, and the lanes lifted.
+#[inline(always)]
+fn lifted<V: Lanes>(x: V, lift: V::T) -> (V, V::Mask) {
+    let subnormal = x.lt(V::splat(V::T::MIN_POSITIVE));
+    (V::select(subnormal, x * V::splat(lift), x), subnormal)
+}
+
+/// `ln x` from `y`, the core logarithm of the lifted x: k ln 2 (`ln_lift`) taken off in the
+/// lifted lanes; −inf at 0, +inf at +inf, NaN for NaN and negative x.
+#[inline(always)]
+fn ln_special<V: Lanes>(x: V, y: V, subnormal: V::Mask, ln_lift: V::T) -> V {
+    let s = V::splat;
+    let zero = s(V::T::ZERO);
+    let y = V::select(subnormal, y - s(ln_lift), y);
+    let y = V::select(x.eq(s(V::T::INFINITY)), x, y);
+    let y = V::select(!x.eq(x) | x.lt(zero), s(V::T::NAN), y);
+    V::select(x.eq(zero), -s(V::T::INFINITY), y)
 }
 
 /// `ln x` in `f32` for every x ≥ 0: within 2 ulp, −inf at 0, +inf at +inf, NaN for NaN and
 /// negative x.
 #[inline(always)]
-pub fn ln_f32(x: f32) -> f32 {
-    // Subnormals are lifted by 2^24 into the range of the bit manipulation.
-    const LIFT: f32 = 16_777_216.0;
-    const LN_LIFT: f32 = 16.635_532; // 24 ln 2
-    let subnormal = x < f32::MIN_POSITIVE;
-    let y = ln_core_f32(if subnormal { x * LIFT } else { x }, 0.0);
-    if x == 0.0 {
-        f32::NEG_INFINITY
-    } else if x.is_nan() || x < 0.0 {
-        f32::NAN
-    } else if x == f32::INFINITY {
-        x
-    } else if subnormal {
-        y - LN_LIFT
-    } else {
-        y
-    }
+pub fn ln_f32<V: Lanes<T = f32>>(x: V) -> V {
+    let (u, subnormal) = lifted(x, 16_777_216.0); // 2^24
+    ln_special(x, ln_core_f32(u, V::splat(0.0)), subnormal, 16.635_532) // 24 ln 2
 }
 
 /// `ln x` in `f64` for every x ≥ 0: within 1 ulp, −inf at 0, +inf at +inf, NaN for NaN and
 /// negative x.
 #[inline(always)]
-pub fn ln_f64(x: f64) -> f64 {
-    // Subnormals are lifted by 2^54 into the range of the bit manipulation.
-    const LIFT: f64 = 18_014_398_509_481_984.0;
-    const LN_LIFT: f64 = 37.429_947_750_237_04; // 54 ln 2
-    let subnormal = x < f64::MIN_POSITIVE;
-    let y = ln_core_f64(if subnormal { x * LIFT } else { x }, 0.0);
-    if x == 0.0 {
-        f64::NEG_INFINITY
-    } else if x.is_nan() || x < 0.0 {
-        f64::NAN
-    } else if x == f64::INFINITY {
-        x
-    } else if subnormal {
-        y - LN_LIFT
-    } else {
-        y
-    }
+pub fn ln_f64<V: Lanes<T = f64>>(x: V) -> V {
+    let (u, subnormal) = lifted(x, 18_014_398_509_481_984.0); // 2^54
+    ln_special(
+        x,
+        ln_core_f64(u, V::splat(0.0)),
+        subnormal,
+        37.429_947_750_237_04,
+    ) // 54 ln 2
 }
 
 #[cfg(test)]
 mod tests {
-    use super::*;
+    use crate::dispatch::{InstructionSet, Isa, LaneWork, Portable};
+    use crate::lanes::{Lanes, MAX_LANES};
+    use crate::real::Real;
+    use scalar::{exp_f32, exp_f64, ln_1p_f32, ln_1p_f64, ln_1p_le_half_f32, ln_f32, ln_f64};
+
+    /// The functions on one value.
+    mod scalar {
+        use crate::lanes::Pack;
+
+        macro_rules! one {
+            ($($name:ident: $t:ty;)*) => {$(
+                pub fn $name(x: $t) -> $t {
+                    super::super::$name(Pack([x])).0[0]
+                }
+            )*};
+        }
+
+        one!(
+            exp_f32: f32; exp_f64: f64; ln_1p_f32: f32; ln_1p_le_half_f32: f32;
+            ln_1p_f64: f64; ln_f32: f32; ln_f64: f64;
+        );
+    }
+
+    /// `exp`, `ln_1p` (on its domain) and `ln` of `x` with the registers of `S`, as bits.
+    struct Sweep<'a, T> {
+        x: &'a [T],
+        bits: &'a mut [Vec<u64>; 3],
+    }
+
+    impl<T: Real> LaneWork for Sweep<'_, T> {
+        #[inline(always)]
+        fn run<S: InstructionSet>(self) {
+            type V<T, S> = <T as Real>::Vector<S>;
+            let n = V::<T, S>::N;
+            let mut out = [T::ZERO; MAX_LANES];
+            for chunk in self.x.chunks_exact(n) {
+                let x = V::<T, S>::load(chunk);
+                let small = x.min(V::<T, S>::splat(T::HALF));
+                for (bits, y) in self.bits.iter_mut().zip([x.exp(), small.ln_1p(), x.ln()]) {
+                    y.store(&mut out);
+                    bits.extend(out[..n].iter().map(|v| v.to_f64().to_bits()));
+                }
+            }
+        }
+    }
+
+    fn sweep_bits<T: Real>(isa: Option<Isa>) -> [Vec<u64>; 3] {
+        let specials = [
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+        ];
+        let x: Vec<T> = (0..4096)
+            .map(|i| {
+                let e = f64::from(i % 700) - 350.0;
+                (1.0 + f64::from(i) / 4096.0)
+                    * 2f64.powf(e / 2.0)
+                    * if i % 3 == 0 { -1.0 } else { 1.0 }
+            })
+            .chain(specials)
+            .chain(
+                [1e-310, -0.999_999, 1e-40, 3e-45]
+                    .into_iter()
+                    .cycle()
+                    .take(8),
+            )
+            .map(T::from_f64)
+            .collect();
+        let mut bits = [Vec::new(), Vec::new(), Vec::new()];
+        let sweep = Sweep {
+            x: &x,
+            bits: &mut bits,
+        };
+        match isa {
+            Some(isa) => isa.run(sweep),
+            None => sweep.run::<Portable>(),
+        }
+        bits
+    }
+
+    #[test]
+    fn every_instruction_set_gives_the_same_bits() {
+        for isa in Isa::ALL.into_iter().filter(|i| i.supported()) {
+            assert!(
+                sweep_bits::<f32>(Some(isa)) == sweep_bits::<f32>(None),
+                "{isa:?}, f32"
+            );
+            assert!(
+                sweep_bits::<f64>(Some(isa)) == sweep_bits::<f64>(None),
+                "{isa:?}, f64"
+            );
+        }
+    }
 
     /// The distance in units in the last place of `exact` between `got` and `exact`.
     fn ulps_f32(got: f32, exact: f64) -> f64 {

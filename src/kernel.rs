@@ -13,8 +13,10 @@
 //! tiny spot factor keeps its value, and colours are saturated at [`Real::COLOR_SATURATION`]:
 //! finite input never meets `inf · 0` or `inf − inf`.
 
+use std::ops::{Add, Sub};
+
 use crate::lanes::{
-    build, normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, Mask, Pack, V3,
+    normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes, V3,
 };
 use crate::material::ColorMaterialMode;
 use crate::plan::Plan;
@@ -39,59 +41,60 @@ pub struct VertexColors<'a, T> {
 /// cancellation ([`length_minus_one`]); elsewhere as ln |v|. So (|v| cos)^s needs one `ln_1p`
 /// per power: ln_1p((|v| − 1) − |v|·x) near 1, ln_1p(−x) + ln |v| elsewhere, x = 1 − cos.
 #[derive(Clone, Copy)]
-pub struct Scale<T, const N: usize> {
+pub struct Scale<V: Lanes> {
     /// The lanes whose length is near 1.
-    pub near: Mask<N>,
+    pub near: V::Mask,
     /// |v| (at most `T::MAX`).
-    pub length: Pack<T, N>,
+    pub length: V,
     /// |v| − 1 in the `near` lanes.
-    pub minus_one: Pack<T, N>,
+    pub minus_one: V,
     /// ln |v| in the other lanes.
-    pub ln: Pack<T, N>,
+    pub ln: V,
 }
 
-impl<T: Real, const N: usize> Scale<T, N> {
+impl<V: Lanes> Scale<V> {
     /// Length 1: a unit vector.
     #[inline(always)]
     pub fn unit() -> Self {
         Self {
-            near: Mask::splat(true),
-            length: Pack::splat(T::ONE),
-            minus_one: Pack::splat(T::ZERO),
-            ln: Pack::splat(T::ZERO),
+            near: V::Mask::splat(true),
+            length: V::splat(V::T::ONE),
+            minus_one: V::splat(V::T::ZERO),
+            ln: V::splat(V::T::ZERO),
         }
     }
 
     /// The scale of `v`, whose length (from [`normalize_and_length`]) is `length`.
     #[inline(always)]
-    pub fn of(v: V3<T, N>, length: Pack<T, N>) -> Self {
+    pub fn of(v: V3<V>, length: V) -> Self {
         let (minus_one, near) = length_minus_one(v, length);
-        let length = length.min(Pack::splat(T::MAX));
-        let far = Pack::select(near, Pack::splat(T::ONE), length);
+        let length = length.min(V::splat(V::T::MAX));
+        // ln |v| is read in the far lanes only, and unit normals have none: skip it then.
+        let ln = if near.all() {
+            V::splat(V::T::ZERO)
+        } else {
+            V::select(near, V::splat(V::T::ONE), length).ln()
+        };
         Self {
             near,
             length,
             minus_one,
-            ln: Pack(T::ln_lanes(far.0)),
+            ln,
         }
     }
 }
 
-/// (a, e) with a + e = x · x exactly (Dekker's product from Veltkamp's split; no fused
-/// multiply-add, so the same bits on every CPU), for |x| well inside the type's range.
+/// (a, e) with a + e = x · x exactly (Dekker's product, or a fused multiply-add: the same exact
+/// error on every CPU), for |x| well inside the type's range.
 #[inline(always)]
-fn square_exact<T: Real, const N: usize>(x: Pack<T, N>) -> (Pack<T, N>, Pack<T, N>) {
-    let c = x * Pack::splat(T::SPLIT);
-    let high = c - (c - x);
-    let low = x - high;
+fn square_exact<V: Lanes>(x: V) -> (V, V) {
     let square = x * x;
-    let error = ((high * high - square) + (high + high) * low) + low * low;
-    (square, error)
+    (square, x.square_error(square))
 }
 
 /// (s, e) with s + e = a + b exactly (Knuth's TwoSum).
 #[inline(always)]
-fn sum_exact<T: Real, const N: usize>(a: Pack<T, N>, b: Pack<T, N>) -> (Pack<T, N>, Pack<T, N>) {
+fn sum_exact<W: Copy + Add<Output = W> + Sub<Output = W>>(a: W, b: W) -> (W, W) {
     let s = a + b;
     let bb = s - a;
     (s, (a - (s - bb)) + (b - bb))
@@ -101,19 +104,17 @@ fn sum_exact<T: Real, const N: usize>(a: Pack<T, N>, b: Pack<T, N>) -> (Pack<T, 
 /// squares and their sum are formed exactly, so |v|² − 1 keeps every bit when |v| ≈ 1 (f32 unit
 /// normals differ from 1 by a few ulp, and (n·ĥ)^s multiplies that by s).
 #[inline(always)]
-pub fn length_minus_one<T: Real, const N: usize>(
-    v: V3<T, N>,
-    length: Pack<T, N>,
-) -> (Pack<T, N>, Mask<N>) {
+pub fn length_minus_one<V: Lanes>(v: V3<V>, length: V) -> (V, V::Mask) {
+    let one = V::splat(V::T::ONE);
     let (a, ae) = square_exact(v.x);
     let (b, be) = square_exact(v.y);
     let (c, ce) = square_exact(v.z);
     let (ab, e1) = sum_exact(a, b);
     let (abc, e2) = sum_exact(ab, c);
-    let near = abc.ge(Pack::splat(T::HALF)) & abc.le(Pack::splat(T::ONE + T::ONE));
+    let near = abc.ge(V::splat(V::T::HALF)) & abc.le(one + one);
     // abc − 1 is exact by Sterbenz in the near lanes.
-    let squared_minus_one = (abc - Pack::splat(T::ONE)) + ((e1 + e2) + ((ae + be) + ce));
-    let m1 = squared_minus_one / (length + Pack::splat(T::ONE));
+    let squared_minus_one = (abc - one) + ((e1 + e2) + ((ae + be) + ce));
+    let m1 = squared_minus_one / (length + one);
     (m1, near)
 }
 
@@ -123,68 +124,62 @@ pub fn length_minus_one<T: Real, const N: usize>(
 /// power as `exp(s·ln(1 − x))`: the error stays a few ulp at any exponent instead of growing as
 /// s·ulp. The length of the vector `a` stands for enters through `scale` (see [`Scale`]).
 #[inline(always)]
-pub fn cos_pow<T: Real, const N: usize>(
-    cos: Pack<T, N>,
-    a: V3<T, N>,
-    b: V3<T, N>,
-    s: T,
-    scale: &Scale<T, N>,
-) -> Pack<T, N> {
-    if s == T::ZERO {
-        return Pack::splat(T::ONE);
+pub fn cos_pow<V: Lanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) -> V {
+    if s == V::T::ZERO {
+        return V::splat(V::T::ONE);
     }
     let d = a - b;
-    let x = Pack::splat(T::HALF) * d.dot(d);
+    let x = V::splat(V::T::HALF) * d.dot(d);
     let near = scale.minus_one - scale.length * x;
-    let y = Pack::select(scale.near, near, -x);
+    let y = V::select(scale.near, near, -x);
     // y > −1: the base is positive (not rounded to 0, where ln would be −inf).
-    let valid =
-        cos.gt(Pack::splat(T::ZERO)) & x.lt(Pack::splat(T::ONE)) & y.gt(Pack::splat(-T::ONE));
-    let ln = y.ln_1p() + Pack::select(scale.near, Pack::splat(T::ZERO), scale.ln);
-    let power = (Pack::splat(s) * ln).exp();
-    power.min(Pack::splat(T::MAX)).or_zero(valid)
+    let zero = V::splat(V::T::ZERO);
+    let valid = cos.gt(zero) & x.lt(V::splat(V::T::ONE)) & y.gt(V::splat(-V::T::ONE));
+    let ln = y.ln_1p() + V::select(scale.near, zero, scale.ln);
+    let power = (V::splat(s) * ln).exp();
+    power.min(V::splat(V::T::MAX)).or_zero(valid)
 }
 
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
 /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
 #[inline(always)]
-pub fn spot_factor<T: Real, const N: usize>(spot: &Spot<T>, to_vertex: V3<T, N>) -> Pack<T, N> {
+pub fn spot_factor<V: Lanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
     let axis = V3::splat(spot.direction);
-    let c = to_vertex.dot(axis).max(Pack::splat(T::ZERO));
-    let inside = c.ge(Pack::splat(spot.cos_cutoff));
+    let c = to_vertex.dot(axis).max(V::splat(V::T::ZERO));
+    let inside = c.ge(V::splat(spot.cos_cutoff));
     cos_pow(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
 }
 
 /// att_i of eq. 2.4; zero coefficients are skipped so an infinite distance gives 0, not NaN, and
 /// a zero denominator (the light at the vertex with k0 = 0) gives a large finite weight.
 #[inline(always)]
-fn attenuation<T: Real, const N: usize>(k: [T; 3], d: Pack<T, N>) -> Pack<T, N> {
-    let mut den = Pack::splat(k[0]);
-    if k[1] != T::ZERO {
-        den = den + Pack::splat(k[1]) * d;
+fn attenuation<V: Lanes>(k: [V::T; 3], d: V) -> V {
+    let mut den = V::splat(k[0]);
+    if k[1] != V::T::ZERO {
+        den = den + V::splat(k[1]) * d;
     }
-    if k[2] != T::ZERO {
-        den = den + Pack::splat(k[2]) * d * d;
+    if k[2] != V::T::ZERO {
+        den = den + V::splat(k[2]) * d * d;
     }
-    Pack::splat(T::ONE) / den.max(Pack::splat(T::MIN_POSITIVE))
-}
-
-/// `x` clamped to ±[`Real::SATURATION`].
-#[inline(always)]
-fn sat<T: Real, const N: usize>(x: Pack<T, N>) -> Pack<T, N> {
-    x.clamp(-T::SATURATION, T::SATURATION)
+    V::splat(V::T::ONE) / den.max(V::splat(V::T::MIN_POSITIVE))
 }
 
 /// `w · factor` for w ≥ 0 and factor > 0 (in the lanes that use it), saturated: a product of
 /// two finite values, so at worst +inf before the clamp, never NaN.
 #[inline(always)]
-fn weight<T: Real, const N: usize>(w: Pack<T, N>, factor: Pack<T, N>) -> Pack<T, N> {
-    (w * factor.min(Pack::splat(T::MAX))).min(Pack::splat(T::SATURATION))
+fn weight<V: Lanes>(w: V, factor: V) -> V {
+    (w * factor.min(V::splat(V::T::MAX))).min(V::splat(V::T::SATURATION))
+}
+
+/// `x` saturated at ±[`Real::SATURATION`] lane by lane.
+#[inline(always)]
+fn sat<V: Lanes>(x: V) -> V {
+    x.clamp(-V::T::SATURATION, V::T::SATURATION)
 }
 
 /// `rgb` saturated lane by lane.
 #[inline(always)]
-fn sat3<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
+fn sat3<V: Lanes>(v: V3<V>) -> V3<V> {
     V3 {
         x: sat(v.x),
         y: sat(v.y),
@@ -192,101 +187,91 @@ fn sat3<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
     }
 }
 
-/// `a += b` component by component with TwoSum, the rounding errors added to `error`.
-#[inline(always)]
-fn two_sum3<T: Real, const N: usize>(a: &mut V3<T, N>, b: V3<T, N>, error: &mut V3<T, N>) {
-    let (x, ex) = sum_exact(a.x, b.x);
-    let (y, ey) = sum_exact(a.y, b.y);
-    let (z, ez) = sum_exact(a.z, b.z);
-    *a = V3 { x, y, z };
-    *error = *error
-        + V3 {
-            x: ex,
-            y: ey,
-            z: ez,
-        };
-}
-
 /// The normal of one side as the equation needs it.
 #[derive(Clone, Copy)]
-struct SideNormal<T, const N: usize> {
+struct SideNormal<V: Lanes> {
     /// n as GL uses it (unit only with `normalize`), negated for the back side.
-    n: V3<T, N>,
+    n: V3<V>,
     /// n̂, its direction (when the plan computes it).
-    unit: V3<T, N>,
+    unit: V3<V>,
     /// |n| (1 with `normalize`): (n·ĥ)^s = (|n| n̂·ĥ)^s.
-    scale: Scale<T, N>,
+    scale: Scale<V>,
 }
 
-/// The light-weighted sums of one side: Σ w·a_cli, Σ w(n⊙VP)d_cli and Σ w·f·pow·s_cli.
-#[derive(Clone, Copy)]
-struct Sums<T, const N: usize> {
-    ambient: V3<T, N>,
-    diffuse: V3<T, N>,
-    specular: V3<T, N>,
-}
-
-impl<T: Real, const N: usize> Sums<T, N> {
-    #[inline(always)]
-    fn zero() -> Self {
-        Self {
-            ambient: V3::zero(),
-            diffuse: V3::zero(),
-            specular: V3::zero(),
-        }
-    }
-
-    /// Every sum, lane by lane, through `f`.
-    #[inline(always)]
-    fn map<U: Real>(&self, f: impl Fn(V3<T, N>) -> V3<U, N>) -> Sums<U, N> {
-        Sums {
-            ambient: f(self.ambient),
-            diffuse: f(self.diffuse),
-            specular: f(self.specular),
-        }
-    }
-
-    /// `self += o` with TwoSum, the rounding errors added to `error`.
-    #[inline(always)]
-    fn add_exact(&mut self, o: &Self, error: &mut Self) {
-        two_sum3(&mut self.ambient, o.ambient, &mut error.ambient);
-        two_sum3(&mut self.diffuse, o.diffuse, &mut error.diffuse);
-        two_sum3(&mut self.specular, o.specular, &mut error.specular);
-    }
-
-    #[inline(always)]
-    fn add(&mut self, o: &Self) {
-        self.ambient = self.ambient + o.ambient;
-        self.diffuse = self.diffuse + o.diffuse;
-        self.specular = self.specular + o.specular;
-    }
-}
-
-/// `v` converted lane by lane.
+/// An RGB sum widened to `f64`.
 #[inline(always)]
-fn convert<T: Real, U: Real, const N: usize>(v: V3<T, N>) -> V3<U, N> {
-    let c = |p: Pack<T, N>| Pack(build(U::ZERO, |i| U::from_f64(p.0[i].to_f64())));
+fn widen<V: Lanes>(v: V3<V>) -> [V::Wide; 3] {
+    [v.x.widen(), v.y.widen(), v.z.widen()]
+}
+
+/// The compensated sum `total + error` of [`widen`]ed sums, rounded back.
+#[inline(always)]
+fn narrow<V: Lanes>(total: [V::Wide; 3], error: [V::Wide; 3]) -> V3<V> {
     V3 {
-        x: c(v.x),
-        y: c(v.y),
-        z: c(v.z),
+        x: V::narrow(total[0] + error[0]),
+        y: V::narrow(total[1] + error[1]),
+        z: V::narrow(total[2] + error[2]),
     }
 }
 
 /// One block's inputs, already loaded into lanes.
 #[derive(Clone, Copy)]
-pub struct Block<T, const N: usize> {
+pub struct Block<V: Lanes> {
     /// Positions (model coordinates), or zeros when the plan does not read them.
-    pub positions: V3<T, N>,
+    pub positions: V3<V>,
     /// Normals (model coordinates).
-    pub normals: V3<T, N>,
+    pub normals: V3<V>,
     /// RGBA vertex colours for `GL_COLOR_MATERIAL`.
-    pub colors: Option<[Pack<T, N>; 4]>,
+    pub colors: Option<[V; 4]>,
 }
 
 /// The primary and secondary RGBA colours of one side of a block, after the clamp (the
 /// secondary is unused without separate specular).
-pub type SideColors<T, const N: usize> = [[Pack<T, N>; 4]; 2];
+pub type SideColors<V> = [[V; 4]; 2];
+
+/// The RGBA lanes of a material colour.
+#[inline(always)]
+fn splat4<V: Lanes>(c: [V::T; 4]) -> [V; 4] {
+    [
+        V::splat(c[0]),
+        V::splat(c[1]),
+        V::splat(c[2]),
+        V::splat(c[3]),
+    ]
+}
+
+/// The RGB of RGBA lanes.
+#[inline(always)]
+fn v3<V: Lanes>(c: [V; 4]) -> V3<V> {
+    V3 {
+        x: c[0],
+        y: c[1],
+        z: c[2],
+    }
+}
+
+/// `x` clamped to [0, 1] where `finite`, NaN elsewhere; + 0 turns −0 into +0, and the clamp
+/// keeps NaN, which `finite` then decides.
+#[inline(always)]
+fn clamp01<V: Lanes>(x: V, finite: V::Mask) -> V {
+    let zero = V::splat(V::T::ZERO);
+    V::select(
+        finite,
+        (x + zero).clamp(V::T::ZERO, V::T::ONE),
+        V::splat(V::T::NAN),
+    )
+}
+
+/// An output colour: `rgb` and `alpha`, clamped.
+#[inline(always)]
+fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask) -> [V; 4] {
+    [
+        clamp01(rgb.x, finite),
+        clamp01(rgb.y, finite),
+        clamp01(rgb.z, finite),
+        clamp01(alpha, finite),
+    ]
+}
 
 /// A prepared scene and its plan: the kernel of one `shade` call.
 pub struct Kernel<'a, T: Real> {
@@ -300,13 +285,13 @@ impl<T: Real> Kernel<'_, T> {
     /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i (finite: at most
     /// 1/`MIN_POSITIVE`).
     #[inline(always)]
-    fn light_at<const N: usize>(
+    fn light_at<V: Lanes<T = T>>(
         light: &PreparedLight<T>,
         attenuated: bool,
-        p: V3<T, N>,
-    ) -> (V3<T, N>, Pack<T, N>) {
+        p: V3<V>,
+    ) -> (V3<V>, V) {
         match light.source {
-            Source::Directional { vp, spot, .. } => (V3::splat(vp), Pack::splat(spot)),
+            Source::Directional { vp, spot, .. } => (V3::splat(vp), V::splat(spot)),
             Source::Positional {
                 position,
                 attenuation: k,
@@ -316,7 +301,7 @@ impl<T: Real> Kernel<'_, T> {
                 let att = if attenuated {
                     attenuation(k, d)
                 } else {
-                    Pack::splat(T::ONE)
+                    V::splat(T::ONE)
                 };
                 let w = match spot {
                     Some(s) => att * spot_factor(&s, -vp),
@@ -330,17 +315,17 @@ impl<T: Real> Kernel<'_, T> {
     /// (n⊙ĥ)^s (Blinn) or (R⊙VP_e)^s (Phong); 0^0 = 1 whatever ĥ, and for s > 0 no specular
     /// from a zero ĥ or a viewer at the vertex.
     #[inline(always)]
-    fn specular_power<const N: usize>(
+    fn specular_power<V: Lanes<T = T>>(
         &self,
         light: &PreparedLight<T>,
-        side: &SideNormal<T, N>,
-        vp: V3<T, N>,
-        view: V3<T, N>,
-        n_dot_vp: Pack<T, N>,
+        side: &SideNormal<V>,
+        vp: V3<V>,
+        view: V3<V>,
+        n_dot_vp: V,
         s: T,
-    ) -> Pack<T, N> {
+    ) -> V {
         if s == T::ZERO {
-            return Pack::splat(T::ONE);
+            return V::splat(T::ONE);
         }
         match self.prepared.specular {
             Specular::Blinn => {
@@ -356,7 +341,7 @@ impl<T: Real> Kernel<'_, T> {
             Specular::Phong => {
                 let r = side.n.scale(n_dot_vp + n_dot_vp) - vp;
                 let (r_unit, r_length) = normalize_and_length_fast(r);
-                let zero = r_length.eq(Pack::splat(T::ZERO));
+                let zero = r_length.eq(V::splat(T::ZERO));
                 let scale = if self.prepared.normalize {
                     Scale::unit()
                 } else {
@@ -371,18 +356,13 @@ impl<T: Real> Kernel<'_, T> {
     /// The material of `side` (0 front, 1 back), with the vertex colours where
     /// `GL_COLOR_MATERIAL` tracks them: ambient, diffuse, specular, emission, as RGBA lanes.
     #[inline(always)]
-    fn material<const N: usize>(
-        &self,
-        side: usize,
-        colors: Option<[Pack<T, N>; 4]>,
-    ) -> [[Pack<T, N>; 4]; 4] {
+    fn material<V: Lanes<T = T>>(&self, side: usize, colors: Option<[V; 4]>) -> [[V; 4]; 4] {
         let m = &self.prepared.materials[side];
-        let splat = |c: [T; 4]| [0, 1, 2, 3].map(|k| Pack::splat(c[k]));
         let mut out = [
-            splat(m.ambient),
-            splat(m.diffuse),
-            splat(m.specular),
-            splat(m.emission),
+            splat4(m.ambient),
+            splat4(m.diffuse),
+            splat4(m.specular),
+            splat4(m.emission),
         ];
         if let (Some(cm), Some(c)) = (self.prepared.color_material, colors) {
             if cm.applies_to(side == 1) {
@@ -402,40 +382,41 @@ impl<T: Real> Kernel<'_, T> {
     }
 
     /// The light sums of `lights` (the lights `first..` of the scene) at one block, for
-    /// `side` (0 front, 1 back, whose normal `normal` is already negated).
+    /// `side` (0 front, 1 back, whose normal `normal` is already negated): ambient, diffuse
+    /// and specular.
     #[inline(always)]
-    fn sums<const N: usize>(
+    fn sums<V: Lanes<T = T>>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
-        p: V3<T, N>,
-        normal: &SideNormal<T, N>,
+        p: V3<V>,
+        normal: &SideNormal<V>,
         side: usize,
-        view: V3<T, N>,
-    ) -> Sums<T, N> {
+        view: V3<V>,
+    ) -> [V3<V>; 3] {
         let (prepared, plan) = (self.prepared, self.plan);
-        let zero = Pack::splat(T::ZERO);
+        let zero = V::splat(T::ZERO);
         let side_plan = &plan.sides[side];
         let s = prepared.materials[side].shininess;
-        let mut acc = Sums::<T, N>::zero();
+        let [mut ambient, mut diffuse, mut specular] = [V3::<V>::zero(); 3];
         for (light, lp) in lights.iter().zip(&plan.lights[first..]) {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if lp.ambient {
-                let weight = w.min(Pack::splat(T::SATURATION));
-                acc.ambient = acc.ambient + V3::splat(light.ambient).scale(weight);
+                let weight = w.min(V::splat(T::SATURATION));
+                ambient = ambient + V3::splat(light.ambient).scale(weight);
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
-                acc.diffuse = acc.diffuse + V3::splat(light.diffuse).scale(weight);
+                diffuse = diffuse + V3::splat(light.diffuse).scale(weight);
             }
             if lp.specular && side_plan.specular {
                 let power = if side_plan.power {
                     self.specular_power(light, normal, vp, view, n_dot_vp, s)
                 } else {
-                    Pack::splat(T::ONE)
+                    V::splat(T::ONE)
                 };
                 // Without the gate (learnopengl) a zero normal or a light at the vertex still
                 // has no direction, so no specular.
@@ -445,20 +426,83 @@ impl<T: Real> Kernel<'_, T> {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
                 let weight = weight(w, power).or_zero(gate);
-                acc.specular = acc.specular + V3::splat(light.specular).scale(weight);
+                specular = specular + V3::splat(light.specular).scale(weight);
             }
         }
-        acc
+        [ambient, diffuse, specular]
     }
 
-    /// The colours of one side of a block of `N` vertices (0 front, 1 back: the back of
-    /// two-sided lighting is lit with −n and the back material): the primary and, with separate
-    /// specular, the secondary colour, clamped, NaN in the lanes whose inputs are not finite.
-    /// The equation for `N` vertices at once.
+    /// The light sums of every light: in `T` for up to [`Real::SUM_BLOCK`] lights; beyond, in
+    /// blocks of that many, added in `f64` with their rounding errors kept apart, so the error
+    /// is `SUM_BLOCK` ulp of Σ|terms| whatever the light count. Saturated.
     #[inline(always)]
-    pub fn block<const N: usize>(&self, input: &Block<T, N>, side: usize) -> SideColors<T, N> {
+    fn all_sums<V: Lanes<T = T>>(
+        &self,
+        p: V3<V>,
+        normal: &SideNormal<V>,
+        side: usize,
+        view: V3<V>,
+    ) -> [V3<V>; 3] {
+        let lights = &self.prepared.lights;
+        let sums = if lights.len() <= T::SUM_BLOCK {
+            self.sums(lights, 0, p, normal, side, view)
+        } else {
+            let zero = V::splat(T::ZERO).widen();
+            let (mut total, mut error) = ([[zero; 3]; 3], [[zero; 3]; 3]);
+            for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
+                let part = self.sums(chunk, b * T::SUM_BLOCK, p, normal, side, view);
+                for ((t, e), x) in total.iter_mut().zip(&mut error).zip(part) {
+                    let x = widen(x);
+                    for k in 0..3 {
+                        let (sum, rounding) = sum_exact(t[k], x[k]);
+                        t[k] = sum;
+                        e[k] = e[k] + rounding;
+                    }
+                }
+            }
+            [
+                narrow(total[0], error[0]),
+                narrow(total[1], error[1]),
+                narrow(total[2], error[2]),
+            ]
+        };
+        [sat3(sums[0]), sat3(sums[1]), sat3(sums[2])]
+    }
+
+    /// The normal of the front side as the plan needs it.
+    #[inline(always)]
+    fn front_normal<V: Lanes<T = T>>(&self, n: V3<V>) -> SideNormal<V> {
+        if !self.plan.unit_normal {
+            return SideNormal {
+                n,
+                unit: n,
+                scale: Scale::unit(),
+            };
+        }
+        let (unit, length) = normalize_and_length(n);
+        if self.prepared.normalize {
+            SideNormal {
+                n: unit,
+                unit,
+                scale: Scale::unit(),
+            }
+        } else {
+            let scale = if self.plan.normal_length {
+                Scale::of(n, length)
+            } else {
+                Scale::unit()
+            };
+            SideNormal { n, unit, scale }
+        }
+    }
+
+    /// The colours of one side of a block of vertices (0 front, 1 back: the back of two-sided
+    /// lighting is lit with −n and the back material): the primary and, with separate
+    /// specular, the secondary colour, clamped, NaN in the lanes whose inputs are not finite.
+    /// The equation for a whole block at once.
+    #[inline(always)]
+    pub fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
         let (prepared, plan) = (self.prepared, self.plan);
-        let zero = Pack::splat(T::ZERO);
         let (mut p, mut n) = (input.positions, input.normals);
         if let Some(t) = &prepared.transform {
             n = t.normal(n);
@@ -471,32 +515,11 @@ impl<T: Real> Kernel<'_, T> {
             finite = finite & p.is_finite();
         }
         if let Some(c) = &input.colors {
-            finite = finite & c.iter().fold(Mask::splat(true), |m, x| m & x.is_finite());
+            finite = finite & c[0].is_finite() & c[1].is_finite();
+            finite = finite & c[2].is_finite() & c[3].is_finite();
         }
 
-        let front = if plan.unit_normal {
-            let (unit, length) = normalize_and_length(n);
-            if prepared.normalize {
-                SideNormal {
-                    n: unit,
-                    unit,
-                    scale: Scale::unit(),
-                }
-            } else {
-                let scale = if plan.normal_length {
-                    Scale::of(n, length)
-                } else {
-                    Scale::unit()
-                };
-                SideNormal { n, unit, scale }
-            }
-        } else {
-            SideNormal {
-                n,
-                unit: n,
-                scale: Scale::unit(),
-            }
-        };
+        let front = self.front_normal(n);
         let normal = if side == 0 {
             front
         } else {
@@ -511,49 +534,22 @@ impl<T: Real> Kernel<'_, T> {
             Viewer::Local(e) if plan.view => normalize_or_zero_fast(V3::splat(e) - p),
             Viewer::Local(_) => V3::zero(),
         };
+        let [ambient, diffuse, specular] = self.all_sums(p, &normal, side, view);
 
-        let lights = &prepared.lights;
-        let sums = if lights.len() <= T::SUM_BLOCK {
-            self.sums(lights, 0, p, &normal, side, view)
-        } else {
-            // Blocks of SUM_BLOCK lights, added in f64 with their rounding errors kept apart:
-            // the error is SUM_BLOCK ulp of Σ|terms| whatever the light count.
-            let (mut total, mut error) = (Sums::<f64, N>::zero(), Sums::<f64, N>::zero());
-            for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums(chunk, b * T::SUM_BLOCK, p, &normal, side, view);
-                total.add_exact(&part.map(convert::<T, f64, N>), &mut error);
-            }
-            total.add(&error);
-            total.map(convert::<f64, T, N>)
-        };
-        let sums = sums.map(sat3);
-
-        let nan = Pack::splat(T::NAN);
-        // + 0 turns −0 into +0; the clamp keeps NaN, which `finite` then decides.
-        let clamp = |x: Pack<T, N>| Pack::select(finite, (x + zero).clamp(T::ZERO, T::ONE), nan);
-        let emit = |rgb: V3<T, N>, alpha: Pack<T, N>| {
-            [clamp(rgb.x), clamp(rgb.y), clamp(rgb.z), clamp(alpha)]
-        };
         let [a, d, s, e] = self.material(side, input.colors);
         let alpha = d[3];
-        let rgb = |c: [Pack<T, N>; 4]| V3 {
-            x: c[0],
-            y: c[1],
-            z: c[2],
-        };
-        let (a, d, s, e) = (rgb(a), rgb(d), rgb(s), rgb(e));
-        let mul = |m: V3<T, N>, v: V3<T, N>| V3 {
-            x: m.x * v.x,
-            y: m.y * v.y,
-            z: m.z * v.z,
-        };
+        let (a, d, s, e) = (v3(a), v3(d), v3(s), v3(e));
         let global = V3::splat(prepared.global_ambient);
-        let lit = e + mul(a, global) + mul(a, sums.ambient) + mul(d, sums.diffuse);
-        let specular = mul(s, sums.specular);
+        let lit = e + a.mul_elements(global) + a.mul_elements(ambient) + d.mul_elements(diffuse);
+        let specular = s.mul_elements(specular);
         if prepared.separate_specular {
-            [emit(lit, alpha), emit(specular, Pack::splat(T::ONE))]
+            [
+                emit(lit, alpha, finite),
+                emit(specular, V::splat(T::ONE), finite),
+            ]
         } else {
-            [emit(lit + specular, alpha), [zero; 4]]
+            let zero = V::splat(T::ZERO);
+            [emit(lit + specular, alpha, finite), [zero; 4]]
         }
     }
 }
@@ -561,8 +557,11 @@ impl<T: Real> Kernel<'_, T> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lanes::Pack;
 
-    fn one(v: [f32; 3]) -> V3<f32, 1> {
+    type One = Pack<f32, 1>;
+
+    fn one(v: [f32; 3]) -> V3<One> {
         V3::splat(v)
     }
 
@@ -599,8 +598,8 @@ mod tests {
         for i in 0..20_000 {
             let t = f64::from(i) * 0.013;
             let v = [t.sin() * t.cos(), t.sin() * t.sin(), t.cos()].map(|c| c as f32);
-            let (_, len) = normalize_and_length(V3::<f32, 1>::splat(v));
-            let (m1, near) = length_minus_one(V3::<f32, 1>::splat(v), len);
+            let (_, len) = normalize_and_length(V3::<One>::splat(v));
+            let (m1, near) = length_minus_one(V3::<One>::splat(v), len);
             assert!(near.0[0]);
             let exact = v.map(f64::from).iter().map(|c| c * c).sum::<f64>().sqrt() - 1.0;
             worst = worst.max((f64::from(m1.0[0]) - exact).abs());
@@ -611,7 +610,7 @@ mod tests {
     #[test]
     fn the_scale_of_long_and_short_vectors_enters_as_a_logarithm() {
         for &(v, s) in &[([3.0_f32, 0.0, 4.0], 3.0_f32), ([0.06, 0.0, 0.08], 2.0)] {
-            let v1 = V3::<f32, 1>::splat(v);
+            let v1 = V3::<One>::splat(v);
             let (unit, len) = normalize_and_length(v1);
             let scale = Scale::of(v1, len);
             assert!(!scale.near.0[0]);

@@ -1,264 +1,261 @@
-//! Lane arrays: `N` values of `f32` or `f64` processed together, one vertex per lane.
+//! Lanes: one value per vertex of a block, in one vector register where the CPU has one.
 //!
-//! Every operation is an element-wise loop over a fixed-size array, marked `#[inline(always)]`,
-//! so inside a function compiled with `#[target_feature]` (see [`crate::dispatch`]) LLVM emits
-//! one AVX-512, AVX2 or SSE2 instruction per operation. Only IEEE basic operations (+, −, ×, ÷,
-//! √, comparisons, selects, bit moves) appear: no fused multiply-add, no approximate reciprocal,
-//! so every instruction set gives the same bits.
+//! [`Lanes`] is the vector of `f32` or `f64` the kernel computes with; its implementations are
+//! the registers of each instruction set ([`x86`]: SSE2, AVX2, AVX-512) and plain arrays
+//! ([`Pack`], for other CPUs and for one-lane evaluation). The kernel and the elementary
+//! functions are written once against the trait. Only IEEE basic operations (+, −, ×, ÷, √,
+//! comparisons, selects, integer operations on the bits) are offered, so every implementation
+//! gives the same bits; the one fused multiply-add ([`Lanes::square_error`]) computes an exact
+//! quantity, which the instruction sets without it compute exactly another way.
+
+mod portable;
+#[cfg(target_arch = "x86_64")]
+pub(crate) mod x86;
 
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
+pub use portable::Pack;
+
 use crate::real::Real;
 
-/// `[f(0), …, f(N − 1)]`, built by a plain loop. `array::from_fn` and `array::map` may stay
-/// out of line, and then run without the caller's target features, one lane at a time.
-#[inline(always)]
-pub fn build<U: Copy, const N: usize>(fill: U, f: impl Fn(usize) -> U) -> [U; N] {
-    let mut out = [fill; N];
-    for (i, o) in out.iter_mut().enumerate() {
-        *o = f(i);
-    }
-    out
-}
+/// The most lanes any implementation has: the size of the buffers that hold one block.
+pub const MAX_LANES: usize = 16;
 
-/// `N` values of `T`, one per vertex.
-#[must_use]
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pack<T, const N: usize>(pub [T; N]);
-
-/// `N` booleans, the result of a lane-wise comparison.
-#[must_use]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub struct Mask<const N: usize>(pub [bool; N]);
-
-impl<const N: usize> Mask<N> {
+/// The result of a lane-wise comparison.
+pub trait LaneMask:
+    Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self>
+{
     /// Every lane set to `b`.
-    #[inline(always)]
-    pub fn splat(b: bool) -> Self {
-        Self([b; N])
-    }
-
+    fn splat(b: bool) -> Self;
+    /// Bit `i` set when lane `i` is.
+    fn bitmask(self) -> u64;
     /// True when every lane is set.
-    #[inline(always)]
-    pub fn all(self) -> bool {
-        self.0.iter().fold(true, |a, &b| a & b)
-    }
-
+    fn all(self) -> bool;
     /// True when some lane is set.
     #[inline(always)]
-    pub fn any(self) -> bool {
-        self.0.iter().fold(false, |a, &b| a | b)
+    fn any(self) -> bool {
+        self.bitmask() != 0
     }
 }
 
-impl<const N: usize> BitAnd for Mask<N> {
-    type Output = Self;
-    #[inline(always)]
-    fn bitand(self, o: Self) -> Self {
-        Self(build(false, |i| self.0[i] & o.0[i]))
-    }
+/// The bits of a [`Lanes`] as unsigned integers of the same width (u32 for `f32`, u64 for
+/// `f64`), with wrapping arithmetic and logical shifts.
+pub trait LaneBits:
+    Copy + Add<Output = Self> + Sub<Output = Self> + BitAnd<Output = Self> + BitOr<Output = Self>
+{
+    /// Every lane set to `x` (truncated to the lane width).
+    fn splat(x: u64) -> Self;
+    /// Each lane shifted left by `k` bits.
+    #[must_use]
+    fn shl(self, k: u32) -> Self;
+    /// Each lane shifted right by `k` bits, filling with zeros.
+    #[must_use]
+    fn shr(self, k: u32) -> Self;
 }
 
-impl<const N: usize> BitOr for Mask<N> {
-    type Output = Self;
-    #[inline(always)]
-    fn bitor(self, o: Self) -> Self {
-        Self(build(false, |i| self.0[i] | o.0[i]))
-    }
-}
+/// `N` values of `T`, one per vertex of a block.
+///
+/// `min` and `max` keep a NaN of `self` (`self.min(o)` is `o` where `o < self`, else `self`),
+/// which is what x86's `minps o, self` computes.
+pub trait Lanes:
+    Copy
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+{
+    /// The element type.
+    type T: Real;
+    /// A comparison's result.
+    type Mask: LaneMask;
+    /// The bits of the lanes.
+    type Bits: LaneBits;
+    /// The same lanes in `f64` (itself for `f64`): partial sums of many lights are added there.
+    type Wide: Copy + Add<Output = Self::Wide> + Sub<Output = Self::Wide>;
+    /// The number of lanes (at most [`MAX_LANES`]).
+    const N: usize;
 
-impl<const N: usize> Not for Mask<N> {
-    type Output = Self;
-    #[inline(always)]
-    fn not(self) -> Self {
-        Self(build(false, |i| !self.0[i]))
-    }
-}
-
-impl<T: Real, const N: usize> Pack<T, N> {
     /// Every lane set to `x`.
-    #[inline(always)]
-    pub fn splat(x: T) -> Self {
-        Self([x; N])
-    }
-
-    /// `f` applied to every lane.
-    #[inline(always)]
-    pub fn map(self, f: impl Fn(T) -> T) -> Self {
-        Self(build(T::ZERO, |i| f(self.0[i])))
-    }
-
-    /// `f` applied lane by lane to `self` and `other`.
-    #[inline(always)]
-    pub fn zip(self, other: Self, f: impl Fn(T, T) -> T) -> Self {
-        Self(build(T::ZERO, |i| f(self.0[i], other.0[i])))
-    }
-
-    /// `a` where `mask` is set, else `b`.
-    #[inline(always)]
-    pub fn select(mask: Mask<N>, a: Self, b: Self) -> Self {
-        Self(build(T::ZERO, |i| if mask.0[i] { a.0[i] } else { b.0[i] }))
-    }
-
-    /// `self` where `mask` is set, else 0: a select, never a multiplication by a 0/1 mask
-    /// (0 · inf would be NaN).
-    #[inline(always)]
-    pub fn or_zero(self, mask: Mask<N>) -> Self {
-        Self::select(mask, self, Self::splat(T::ZERO))
-    }
-
+    fn splat(x: Self::T) -> Self;
+    /// The first `N` values of `src`.
+    fn load(src: &[Self::T]) -> Self;
+    /// Writes the lanes to the first `N` values of `dst`.
+    fn store(self, dst: &mut [Self::T]);
+    /// Lane-wise square root.
+    #[must_use]
+    fn sqrt(self) -> Self;
+    /// Lane-wise minimum; a NaN lane of `self` stays NaN.
+    #[must_use]
+    fn min(self, o: Self) -> Self;
+    /// Lane-wise maximum; a NaN lane of `self` stays NaN.
+    #[must_use]
+    fn max(self, o: Self) -> Self;
     /// Lane-wise `self < o`.
+    fn lt(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self <= o`.
+    fn le(self, o: Self) -> Self::Mask;
+    /// Lane-wise `self == o`.
+    fn eq(self, o: Self) -> Self::Mask;
+    /// `a` where `mask` is set, else `b`.
+    fn select(mask: Self::Mask, a: Self, b: Self) -> Self;
+    /// The bits of every lane.
+    fn to_bits(self) -> Self::Bits;
+    /// The lanes with bits `b`.
+    fn from_bits(b: Self::Bits) -> Self;
+    /// Exactly widened to `f64`.
+    fn widen(self) -> Self::Wide;
+    /// Rounded back from `f64`.
+    fn narrow(w: Self::Wide) -> Self;
+
+    /// `x·x − square` for `square` = x·x rounded: the rounding error of the square, exact
+    /// wherever x·x neither over- nor underflows. Veltkamp's split and Dekker's product here;
+    /// a fused multiply-add where the CPU has one (the same exact value).
     #[inline(always)]
-    pub fn lt(self, o: Self) -> Mask<N> {
-        Mask(build(false, |i| self.0[i] < o.0[i]))
+    #[must_use]
+    fn square_error(self, square: Self) -> Self {
+        let c = self * Self::splat(Self::T::SPLIT);
+        let high = c - (c - self);
+        let low = self - high;
+        ((high * high - square) + (high + high) * low) + low * low
     }
 
-    /// Lane-wise `self <= o`.
+    /// `N` rows `[x, y, z]` (`rows` holds exactly `N`) as three lanes.
     #[inline(always)]
-    pub fn le(self, o: Self) -> Mask<N> {
-        Mask(build(false, |i| self.0[i] <= o.0[i]))
+    fn load_rows3(rows: &[[Self::T; 3]]) -> V3<Self> {
+        let mut planes = [[Self::T::ZERO; MAX_LANES]; 3];
+        for (i, row) in rows.iter().enumerate().take(Self::N) {
+            for (plane, &value) in planes.iter_mut().zip(row) {
+                plane[i] = value;
+            }
+        }
+        V3 {
+            x: Self::load(&planes[0]),
+            y: Self::load(&planes[1]),
+            z: Self::load(&planes[2]),
+        }
+    }
+
+    /// Writes four lanes as `N` rows `[r, g, b, a]` (`rows` holds exactly `N`).
+    #[inline(always)]
+    fn store_rows4(rgba: [Self; 4], rows: &mut [[Self::T; 4]]) {
+        let mut planes = [[Self::T::ZERO; MAX_LANES]; 4];
+        for (plane, lanes) in planes.iter_mut().zip(rgba) {
+            lanes.store(plane);
+        }
+        for (i, row) in rows.iter_mut().enumerate().take(Self::N) {
+            *row = [planes[0][i], planes[1][i], planes[2][i], planes[3][i]];
+        }
     }
 
     /// Lane-wise `self > o`.
     #[inline(always)]
-    pub fn gt(self, o: Self) -> Mask<N> {
+    fn gt(self, o: Self) -> Self::Mask {
         o.lt(self)
     }
 
     /// Lane-wise `self >= o`.
     #[inline(always)]
-    pub fn ge(self, o: Self) -> Mask<N> {
+    fn ge(self, o: Self) -> Self::Mask {
         o.le(self)
     }
 
-    /// Lane-wise `self == o`.
+    /// `self` where `mask` is set, else 0: a select, never a multiplication by a 0/1 mask
+    /// (0 · inf would be NaN).
     #[inline(always)]
-    pub fn eq(self, o: Self) -> Mask<N> {
-        Mask(build(false, |i| self.0[i] == o.0[i]))
+    #[must_use]
+    fn or_zero(self, mask: Self::Mask) -> Self {
+        Self::select(mask, self, Self::splat(Self::T::ZERO))
     }
 
     /// The lanes that are neither NaN nor infinite (x − x is 0 exactly for finite x).
     #[inline(always)]
     #[allow(clippy::eq_op)]
-    pub fn is_finite(self) -> Mask<N> {
-        (self - self).eq(Self::splat(T::ZERO))
-    }
-
-    /// Lane-wise minimum; a NaN lane of `self` stays NaN.
-    #[inline(always)]
-    pub fn min(self, o: Self) -> Self {
-        Self::select(o.lt(self), o, self)
-    }
-
-    /// Lane-wise maximum; a NaN lane of `self` stays NaN.
-    #[inline(always)]
-    pub fn max(self, o: Self) -> Self {
-        Self::select(self.lt(o), o, self)
+    fn is_finite(self) -> Self::Mask {
+        (self - self).eq(Self::splat(Self::T::ZERO))
     }
 
     /// `self` clamped to [`lo`, `hi`] lane by lane; NaN stays NaN.
     #[inline(always)]
-    pub fn clamp(self, lo: T, hi: T) -> Self {
+    #[must_use]
+    fn clamp(self, lo: Self::T, hi: Self::T) -> Self {
         self.max(Self::splat(lo)).min(Self::splat(hi))
-    }
-
-    /// Lane-wise square root.
-    #[inline(always)]
-    pub fn sqrt(self) -> Self {
-        self.map(T::sqrt)
     }
 
     /// Lane-wise `e^x` (see [`Real::exp_lanes`]).
     #[inline(always)]
-    pub fn exp(self) -> Self {
-        Self(T::exp_lanes(self.0))
+    #[must_use]
+    fn exp(self) -> Self {
+        Self::T::exp_lanes(self)
     }
 
-    /// Lane-wise `ln(1 + x)` (see [`Real::ln_1p_lanes`]).
+    /// Lane-wise `ln(1 + x)` for x in (−1, ½] (see [`Real::ln_1p_lanes`]).
     #[inline(always)]
-    pub fn ln_1p(self) -> Self {
-        Self(T::ln_1p_lanes(self.0))
+    #[must_use]
+    fn ln_1p(self) -> Self {
+        Self::T::ln_1p_lanes(self)
     }
-}
 
-macro_rules! lane_op {
-    ($trait:ident, $method:ident, $op:tt) => {
-        impl<T: Real, const N: usize> $trait for Pack<T, N> {
-            type Output = Self;
-            #[inline(always)]
-            fn $method(self, o: Self) -> Self {
-                Self(build(T::ZERO, |i| self.0[i] $op o.0[i]))
-            }
-        }
-    };
-}
-lane_op!(Add, add, +);
-lane_op!(Sub, sub, -);
-lane_op!(Mul, mul, *);
-lane_op!(Div, div, /);
-
-impl<T: Real, const N: usize> Neg for Pack<T, N> {
-    type Output = Self;
+    /// Lane-wise `ln x` (see [`Real::ln_lanes`]).
     #[inline(always)]
-    fn neg(self) -> Self {
-        self.map(|x| -x)
+    #[must_use]
+    fn ln(self) -> Self {
+        Self::T::ln_lanes(self)
+    }
+
+    /// Lane `i`.
+    #[inline(always)]
+    fn lane(self, i: usize) -> Self::T {
+        let mut values = [Self::T::ZERO; MAX_LANES];
+        self.store(&mut values);
+        values[i]
     }
 }
 
-/// A 3-vector of packs: `N` vectors, stored as x, y and z lanes.
+/// A 3-vector of lanes: `N` vectors, stored as x, y and z lanes.
 #[must_use]
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct V3<T, const N: usize> {
+pub struct V3<V> {
     /// The x components.
-    pub x: Pack<T, N>,
+    pub x: V,
     /// The y components.
-    pub y: Pack<T, N>,
+    pub y: V,
     /// The z components.
-    pub z: Pack<T, N>,
+    pub z: V,
 }
 
-impl<T: Real, const N: usize> V3<T, N> {
+impl<V: Lanes> V3<V> {
     /// The zero vector in every lane.
     #[inline(always)]
     pub fn zero() -> Self {
-        Self::splat([T::ZERO; 3])
+        Self::splat([V::T::ZERO; 3])
     }
 
     /// The vector `v` in every lane.
     #[inline(always)]
-    pub fn splat(v: [T; 3]) -> Self {
+    pub fn splat(v: [V::T; 3]) -> Self {
         Self {
-            x: Pack::splat(v[0]),
-            y: Pack::splat(v[1]),
-            z: Pack::splat(v[2]),
-        }
-    }
-
-    /// `N` rows `[x, y, z]`, one per lane.
-    #[inline(always)]
-    pub fn load(rows: &[[T; 3]; N]) -> Self {
-        Self {
-            x: Pack(build(T::ZERO, |i| rows[i][0])),
-            y: Pack(build(T::ZERO, |i| rows[i][1])),
-            z: Pack(build(T::ZERO, |i| rows[i][2])),
+            x: V::splat(v[0]),
+            y: V::splat(v[1]),
+            z: V::splat(v[2]),
         }
     }
 
     /// The vector of lane `i`.
     #[inline(always)]
-    pub fn lane(&self, i: usize) -> [T; 3] {
-        [self.x.0[i], self.y.0[i], self.z.0[i]]
+    pub fn lane(&self, i: usize) -> [V::T; 3] {
+        [self.x.lane(i), self.y.lane(i), self.z.lane(i)]
     }
 
     /// The dot product `(x·x' + y·y') + z·z'`, in glam's order.
     #[inline(always)]
-    pub fn dot(self, o: Self) -> Pack<T, N> {
+    pub fn dot(self, o: Self) -> V {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
     /// Every component times `s`.
     #[inline(always)]
-    pub fn scale(self, s: Pack<T, N>) -> Self {
+    pub fn scale(self, s: V) -> Self {
         Self {
             x: self.x * s,
             y: self.y * s,
@@ -268,7 +265,7 @@ impl<T: Real, const N: usize> V3<T, N> {
 
     /// Every component divided by `s`.
     #[inline(always)]
-    pub fn div_by(self, s: Pack<T, N>) -> Self {
+    pub fn div_by(self, s: V) -> Self {
         Self {
             x: self.x / s,
             y: self.y / s,
@@ -276,31 +273,41 @@ impl<T: Real, const N: usize> V3<T, N> {
         }
     }
 
+    /// Component-wise product.
+    #[inline(always)]
+    pub fn mul_elements(self, o: Self) -> Self {
+        Self {
+            x: self.x * o.x,
+            y: self.y * o.y,
+            z: self.z * o.z,
+        }
+    }
+
     /// `a` where `mask` is set, else `b`.
     #[inline(always)]
-    pub fn select(mask: Mask<N>, a: Self, b: Self) -> Self {
+    pub fn select(mask: V::Mask, a: Self, b: Self) -> Self {
         Self {
-            x: Pack::select(mask, a.x, b.x),
-            y: Pack::select(mask, a.y, b.y),
-            z: Pack::select(mask, a.z, b.z),
+            x: V::select(mask, a.x, b.x),
+            y: V::select(mask, a.y, b.y),
+            z: V::select(mask, a.z, b.z),
         }
     }
 
     /// The lanes whose three components are finite.
     #[inline(always)]
-    pub fn is_finite(self) -> Mask<N> {
+    pub fn is_finite(self) -> V::Mask {
         self.x.is_finite() & self.y.is_finite() & self.z.is_finite()
     }
 
     /// The lanes holding the zero vector.
     #[inline(always)]
-    pub fn is_zero(self) -> Mask<N> {
-        let z = Pack::splat(T::ZERO);
+    pub fn is_zero(self) -> V::Mask {
+        let z = V::splat(V::T::ZERO);
         self.x.eq(z) & self.y.eq(z) & self.z.eq(z)
     }
 }
 
-impl<T: Real, const N: usize> Add for V3<T, N> {
+impl<V: Lanes> Add for V3<V> {
     type Output = Self;
     #[inline(always)]
     fn add(self, o: Self) -> Self {
@@ -312,7 +319,7 @@ impl<T: Real, const N: usize> Add for V3<T, N> {
     }
 }
 
-impl<T: Real, const N: usize> Sub for V3<T, N> {
+impl<V: Lanes> Sub for V3<V> {
     type Output = Self;
     #[inline(always)]
     fn sub(self, o: Self) -> Self {
@@ -324,7 +331,7 @@ impl<T: Real, const N: usize> Sub for V3<T, N> {
     }
 }
 
-impl<T: Real, const N: usize> Neg for V3<T, N> {
+impl<V: Lanes> Neg for V3<V> {
     type Output = Self;
     #[inline(always)]
     fn neg(self) -> Self {
@@ -345,77 +352,91 @@ impl<T: Real, const N: usize> Neg for V3<T, N> {
 /// round to infinity for |v| beyond the type's range. Each component is divided by the length,
 /// so an axis-aligned vector gives an exact unit vector.
 #[inline(always)]
-pub fn normalize_and_length<T: Real, const N: usize>(v: V3<T, N>) -> (V3<T, N>, Pack<T, N>) {
-    normalize_by::<T, N, true>(v)
+pub fn normalize_and_length<V: Lanes>(v: V3<V>) -> (V3<V>, V) {
+    normalize_by::<V, true>(v)
 }
 
 /// [`normalize_and_length`] with one division and three products instead of three divisions
 /// (within 1 ulp of it): for the per-light vectors of the kernel, where the vector divider is
 /// the scarcest unit.
 #[inline(always)]
-pub fn normalize_and_length_fast<T: Real, const N: usize>(v: V3<T, N>) -> (V3<T, N>, Pack<T, N>) {
-    normalize_by::<T, N, false>(v)
+pub fn normalize_and_length_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V) {
+    normalize_by::<V, false>(v)
 }
 
 #[inline(always)]
-fn normalize_by<T: Real, const N: usize, const DIVIDE: bool>(
-    v: V3<T, N>,
-) -> (V3<T, N>, Pack<T, N>) {
+fn normalize_by<V: Lanes, const DIVIDE: bool>(v: V3<V>) -> (V3<V>, V) {
     let len2 = v.dot(v);
-    let ok = len2.ge(Pack::splat(T::MIN_POSITIVE)) & len2.le(Pack::splat(T::MAX));
+    let ok = len2.ge(V::splat(V::T::MIN_POSITIVE)) & len2.le(V::splat(V::T::MAX));
     let len = len2.sqrt();
     let unit = if DIVIDE {
         v.div_by(len)
     } else {
-        v.scale(Pack::splat(T::ONE) / len)
+        v.scale(V::splat(V::T::ONE) / len)
     };
     if ok.all() {
         return (unit, len);
     }
-    rescaled::<T, N, DIVIDE>(v, len2, ok, unit, len)
+    rescaled::<V, DIVIDE>(v, len2, ok, unit, len)
 }
 
 /// The lanes of [`normalize_and_length`] whose squared length is zero, subnormal, infinite or
 /// NaN, one at a time.
 #[cold]
 #[inline(never)]
-fn rescaled<T: Real, const N: usize, const DIVIDE: bool>(
-    v: V3<T, N>,
-    len2: Pack<T, N>,
-    ok: Mask<N>,
-    mut unit: V3<T, N>,
-    mut len: Pack<T, N>,
-) -> (V3<T, N>, Pack<T, N>) {
-    for i in (0..N).filter(|&i| !ok.0[i]) {
-        let [x, y, z] = v.lane(i);
-        let (u, l) = if x == T::ZERO && y == T::ZERO && z == T::ZERO {
-            ([T::ZERO; 3], T::ZERO)
-        } else if !v.is_finite().0[i] {
-            ([T::NAN; 3], T::NAN)
+fn rescaled<V: Lanes, const DIVIDE: bool>(
+    v: V3<V>,
+    len2: V,
+    ok: V::Mask,
+    unit: V3<V>,
+    len: V,
+) -> (V3<V>, V) {
+    let buffer = |lanes: V| {
+        let mut values = [V::T::ZERO; MAX_LANES];
+        lanes.store(&mut values);
+        values
+    };
+    let (vx, vy, vz, len2) = (buffer(v.x), buffer(v.y), buffer(v.z), buffer(len2));
+    let (mut ux, mut uy, mut uz, mut l) =
+        (buffer(unit.x), buffer(unit.y), buffer(unit.z), buffer(len));
+    let ok = ok.bitmask();
+    for i in (0..V::N).filter(|&i| ok >> i & 1 == 0) {
+        let [x, y, z] = [vx[i], vy[i], vz[i]];
+        let (u, length) = if x == V::T::ZERO && y == V::T::ZERO && z == V::T::ZERO {
+            ([V::T::ZERO; 3], V::T::ZERO)
+        } else if !(x.is_finite() && y.is_finite() && z.is_finite()) {
+            ([V::T::NAN; 3], V::T::NAN)
         } else {
-            let scale = if len2.0[i] < T::MIN_POSITIVE {
-                T::UPSCALE
+            let scale = if len2[i] < V::T::MIN_POSITIVE {
+                V::T::UPSCALE
             } else {
-                T::DOWNSCALE
+                V::T::DOWNSCALE
             };
             let (x, y, z) = (x * scale, y * scale, z * scale);
-            let l = (x * x + y * y + z * z).sqrt();
+            let length = (x * x + y * y + z * z).sqrt();
             let u = if DIVIDE {
-                [x / l, y / l, z / l]
+                [x / length, y / length, z / length]
             } else {
-                let r = T::ONE / l;
+                let r = V::T::ONE / length;
                 [x * r, y * r, z * r]
             };
-            (u, l / scale)
+            (u, length / scale)
         };
-        (unit.x.0[i], unit.y.0[i], unit.z.0[i], len.0[i]) = (u[0], u[1], u[2], l);
+        (ux[i], uy[i], uz[i], l[i]) = (u[0], u[1], u[2], length);
     }
-    (unit, len)
+    (
+        V3 {
+            x: V::load(&ux),
+            y: V::load(&uy),
+            z: V::load(&uz),
+        },
+        V::load(&l),
+    )
 }
 
 /// The unit vector in the direction of `v`, or zero (see [`normalize_and_length_fast`]).
 #[inline(always)]
-pub fn normalize_or_zero_fast<T: Real, const N: usize>(v: V3<T, N>) -> V3<T, N> {
+pub fn normalize_or_zero_fast<V: Lanes>(v: V3<V>) -> V3<V> {
     normalize_and_length_fast(v).0
 }
 
@@ -427,17 +448,17 @@ mod tests {
     fn selects_never_multiply() {
         let a = Pack::<f32, 4>([f32::INFINITY, 1.0, f32::NAN, -2.0]);
         let m = a.gt(Pack::splat(0.0));
-        assert_eq!(m, Mask([true, true, false, false]));
+        assert_eq!(m.bitmask(), 0b0011);
         let z = a.or_zero(m);
         assert_eq!(z.0[..2], [f32::INFINITY, 1.0]);
         assert_eq!(z.0[2..], [0.0, 0.0]);
-        assert_eq!(a.is_finite(), Mask([false, true, false, true]));
+        assert_eq!(a.is_finite().bitmask(), 0b1010);
         assert!(a.clamp(0.0, 1.0).0[2].is_nan(), "clamp keeps NaN");
     }
 
     #[test]
     fn normalisation_is_exact_at_any_scale_and_zero_for_zero() {
-        let v = V3::<f32, 4> {
+        let v = V3::<Pack<f32, 4>> {
             x: Pack([3e-30, 0.0, 3e30, 3.0]),
             y: Pack([4e-30, 0.0, 4e30, 4.0]),
             z: Pack([0.0; 4]),

@@ -4,8 +4,9 @@
 
 use glam::{DMat4, DVec3};
 
+use crate::dispatch::Scalar;
 use crate::error::Error;
-use crate::lanes::V3;
+use crate::lanes::{Lanes, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
 use crate::real::{normalize_or_zero, Real};
@@ -126,7 +127,7 @@ pub struct Transform<T: Real> {
 
 /// `columns · v`, summed column by column (x, then y, then z) like glam's `Mat3 * Vec3`.
 #[inline(always)]
-fn mul3<T: Real, const N: usize>(columns: &[[T; 3]; 3], v: V3<T, N>) -> V3<T, N> {
+fn mul3<V: Lanes>(columns: &[[V::T; 3]; 3], v: V3<V>) -> V3<V> {
     V3::splat(columns[0]).scale(v.x)
         + V3::splat(columns[1]).scale(v.y)
         + V3::splat(columns[2]).scale(v.z)
@@ -135,13 +136,13 @@ fn mul3<T: Real, const N: usize>(columns: &[[T; 3]; 3], v: V3<T, N>) -> V3<T, N>
 impl<T: Real> Transform<T> {
     /// The eye-space positions M·(p, 1).
     #[inline(always)]
-    pub fn point<const N: usize>(&self, p: V3<T, N>) -> V3<T, N> {
+    pub fn point<V: Lanes<T = T>>(&self, p: V3<V>) -> V3<V> {
         mul3(&self.linear, p) + V3::splat(self.translation)
     }
 
     /// The eye-space normals (M⁻¹)ᵀ·n, times the rescale factor if asked for.
     #[inline(always)]
-    pub fn normal<const N: usize>(&self, n: V3<T, N>) -> V3<T, N> {
+    pub fn normal<V: Lanes<T = T>>(&self, n: V3<V>) -> V3<V> {
         mul3(&self.normal, n)
     }
 
@@ -299,8 +300,8 @@ fn prepare_light<T: Real>(
         };
         let vp = cast::<T>(vp);
         let spot = spot.map_or(T::ONE, |s| {
-            let to_vertex = -V3::<T, 1>::splat(vp);
-            crate::kernel::spot_factor(&s, to_vertex).0[0]
+            let to_vertex = -V3::<T::Vector<Scalar>>::splat(vp);
+            crate::kernel::spot_factor(&s, to_vertex).lane(0)
         });
         Source::Directional { vp, halfway, spot }
     } else {
@@ -376,7 +377,9 @@ mod tests {
     use super::*;
     use crate::kernel::spot_factor;
 
-    fn one(v: [f32; 3]) -> V3<f32, 1> {
+    use crate::lanes::Pack;
+
+    fn one(v: [f32; 3]) -> V3<Pack<f32, 1>> {
         V3::splat(v)
     }
 
@@ -429,11 +432,11 @@ mod tests {
     fn transform_uses_the_inverse_transpose() {
         let m = DMat4::from_scale(DVec3::new(2.0, 1.0, 1.0));
         let t = Transform::<f64>::new(&m, false).unwrap();
-        let ones = V3::<f64, 1>::splat([1.0; 3]);
+        let ones = V3::<Pack<f64, 1>>::splat([1.0; 3]);
         assert_eq!(t.point(ones).lane(0), [2.0, 1.0, 1.0]);
         assert_eq!(t.normal(ones).lane(0), [0.5, 1.0, 1.0]);
         let uniform = Transform::<f64>::new(&DMat4::from_scale(DVec3::splat(4.0)), true).unwrap();
-        let z = V3::<f64, 1>::splat([0.0, 0.0, 1.0]);
+        let z = V3::<Pack<f64, 1>>::splat([0.0, 0.0, 1.0]);
         assert_eq!(uniform.normal(z).lane(0), [0.0, 0.0, 1.0]);
         assert!(
             Transform::<f64>::new(&DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0)), false).is_err()

@@ -8,8 +8,9 @@
 
 use glam::{DVec3, Vec3};
 
+use crate::dispatch::{InstructionSet, Scalar};
 use crate::elementary::{exp_f32, exp_f64, ln_1p_f64, ln_1p_le_half_f32, ln_f32, ln_f64};
-use crate::lanes::{Pack, V3};
+use crate::lanes::{Lanes, V3};
 use std::fmt::Debug;
 use std::ops::{Add, AddAssign, Div, Mul, Neg, Sub};
 
@@ -81,6 +82,8 @@ pub trait Real:
 {
     /// The glam 3-vector of this precision.
     type Vec3: Vector3<Self>;
+    /// The lanes of this type in the registers of instruction set `S`.
+    type Vector<S: InstructionSet>: Lanes<T = Self>;
     /// 0.
     const ZERO: Self;
     /// 1.
@@ -95,6 +98,8 @@ pub trait Real:
     const MIN_POSITIVE: Self;
     /// Not a number.
     const NAN: Self;
+    /// +∞.
+    const INFINITY: Self;
     /// An exact power of two that lifts any nonzero subnormal-length vector into the normal range
     /// without overflowing its squared length.
     const UPSCALE: Self;
@@ -122,14 +127,11 @@ pub trait Real:
     fn sqrt(self) -> Self;
     /// `ln(1 + x)` lane by lane for x in (−1, ½], accurate near 0 (see [`crate::elementary`]:
     /// within 2 ulp in f32, 1 ulp in f64, the same bits on every CPU).
-    ///
-    /// Lane functions take whole arrays and call the scalar function in a plain loop: behind a
-    /// closure, LLVM may leave a body this large out of line and scalar.
-    fn ln_1p_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    fn ln_1p_lanes<V: Lanes<T = Self>>(x: V) -> V;
     /// `e^x` lane by lane (see [`crate::elementary`]: within 2 ulp in f32, 1 ulp in f64).
-    fn exp_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    fn exp_lanes<V: Lanes<T = Self>>(x: V) -> V;
     /// `ln x` lane by lane for x ≥ 0 (see [`crate::elementary`]).
-    fn ln_lanes<const N: usize>(x: [Self; N]) -> [Self; N];
+    fn ln_lanes<V: Lanes<T = Self>>(x: V) -> V;
     /// Veltkamp's splitter 2^⌈p/2⌉ + 1 (4097 in f32, 2^27 + 1 in f64): `c = x·SPLIT`,
     /// `hi = c − (c − x)` leaves half the significand in `hi`, so products of halves are exact.
     const SPLIT: Self;
@@ -166,6 +168,7 @@ macro_rules! impl_real_common {
 
 impl Real for f32 {
     type Vec3 = Vec3;
+    type Vector<S: InstructionSet> = S::F32;
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     const HALF: Self = 0.5;
@@ -173,6 +176,7 @@ impl Real for f32 {
     const EPSILON: Self = f32::EPSILON;
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const NAN: Self = f32::NAN;
+    const INFINITY: Self = f32::INFINITY;
     // 2^-149 · 2^100 = 2^-49 (its square is normal); 2^128 · 2^-100 = 2^28 (its square is finite).
     const UPSCALE: Self = f32::from_bits((127 + 100) << 23);
     const DOWNSCALE: Self = f32::from_bits((127 - 100) << 23);
@@ -189,31 +193,23 @@ impl Real for f32 {
     }
     impl_real_common!();
     #[inline(always)]
-    fn ln_1p_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
-        for v in &mut x {
-            *v = ln_1p_le_half_f32(*v);
-        }
-        x
+    fn ln_1p_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        ln_1p_le_half_f32(x)
     }
     #[inline(always)]
-    fn exp_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
-        for v in &mut x {
-            *v = exp_f32(*v);
-        }
-        x
+    fn exp_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        exp_f32(x)
     }
     #[inline(always)]
-    fn ln_lanes<const N: usize>(mut x: [f32; N]) -> [f32; N] {
-        for v in &mut x {
-            *v = ln_f32(*v);
-        }
-        x
+    fn ln_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        ln_f32(x)
     }
     const SPLIT: f32 = 4097.0;
 }
 
 impl Real for f64 {
     type Vec3 = DVec3;
+    type Vector<S: InstructionSet> = S::F64;
     const ZERO: Self = 0.0;
     const ONE: Self = 1.0;
     const HALF: Self = 0.5;
@@ -221,6 +217,7 @@ impl Real for f64 {
     const EPSILON: Self = f64::EPSILON;
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
     const NAN: Self = f64::NAN;
+    const INFINITY: Self = f64::INFINITY;
     // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).
     const UPSCALE: Self = f64::from_bits((1023 + 600) << 52);
     const DOWNSCALE: Self = f64::from_bits((1023 - 600) << 52);
@@ -237,25 +234,16 @@ impl Real for f64 {
     }
     impl_real_common!();
     #[inline(always)]
-    fn ln_1p_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
-        for v in &mut x {
-            *v = ln_1p_f64(*v);
-        }
-        x
+    fn ln_1p_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        ln_1p_f64(x)
     }
     #[inline(always)]
-    fn exp_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
-        for v in &mut x {
-            *v = exp_f64(*v);
-        }
-        x
+    fn exp_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        exp_f64(x)
     }
     #[inline(always)]
-    fn ln_lanes<const N: usize>(mut x: [f64; N]) -> [f64; N] {
-        for v in &mut x {
-            *v = ln_f64(*v);
-        }
-        x
+    fn ln_lanes<V: Lanes<T = Self>>(x: V) -> V {
+        ln_f64(x)
     }
     const SPLIT: f64 = 134_217_729.0;
 }
@@ -267,13 +255,9 @@ impl Real for f64 {
 /// The length itself may round to infinity for |v| beyond the type's range.
 #[inline]
 pub fn normalize_and_length<T: Real>(v: T::Vec3) -> (T::Vec3, T) {
-    let [x, y, z] = v.to_array();
-    let (unit, length) = crate::lanes::normalize_and_length(V3::<T, 1> {
-        x: Pack([x]),
-        y: Pack([y]),
-        z: Pack([z]),
-    });
-    (T::Vec3::from_array(unit.lane(0)), length.0[0])
+    let (unit, length) =
+        crate::lanes::normalize_and_length(V3::<T::Vector<Scalar>>::splat(v.to_array()));
+    (T::Vec3::from_array(unit.lane(0)), length.lane(0))
 }
 
 /// The unit vector in the direction of `v`, or zero for the zero vector (see

@@ -7,10 +7,10 @@
 
 use rayon::prelude::*;
 
-use crate::dispatch::{Isa, LaneWork, LANES};
+use crate::dispatch::{InstructionSet, Isa, LaneWork};
 use crate::error::Error;
 use crate::kernel::{Block, Kernel};
-use crate::lanes::{build, Pack, V3};
+use crate::lanes::{Lanes, MAX_LANES, V3};
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
@@ -38,72 +38,92 @@ struct Task<'a, 'b, T: Real> {
     planes: &'b mut [&'a mut [T]],
 }
 
-/// The `N` rows of `a` from `first` as lanes; a short block of `valid` rows repeats its first.
+/// The `V::N` rows of `a` from `first` as lanes; a short block of `valid` rows repeats its
+/// first row in the missing lanes (finite, and never written back).
 #[inline(always)]
-fn rows<T: Real, const N: usize>(a: &[[T; 3]], first: usize, valid: usize) -> V3<T, N> {
-    match a[first..].first_chunk::<N>() {
-        Some(full) if valid == N => V3::load(full),
-        _ => V3::load(&build([T::ZERO; 3], |j| {
-            a[first + if j < valid { j } else { 0 }]
-        })),
+fn rows<V: Lanes>(a: &[[V::T; 3]], first: usize, valid: usize) -> V3<V> {
+    if valid == V::N {
+        return V::load_rows3(&a[first..first + V::N]);
+    }
+    let mut padded = [[V::T::ZERO; 3]; MAX_LANES];
+    for (j, row) in padded.iter_mut().enumerate().take(V::N) {
+        *row = a[first + if j < valid { j } else { 0 }];
+    }
+    V::load_rows3(&padded[..V::N])
+}
+
+/// The RGBA colours of rows `first..first + valid` as lanes (a missing alpha is 1), padded
+/// like [`rows`].
+#[inline(always)]
+fn color_rows<V: Lanes>(c: VertexColors<'_, V::T>, first: usize, valid: usize) -> [V; 4] {
+    let mut planes = [[V::T::ONE; MAX_LANES]; 4];
+    for j in 0..V::N {
+        let row = first + if j < valid { j } else { 0 };
+        for (k, plane) in planes.iter_mut().enumerate().take(c.width) {
+            plane[j] = c.data[row * c.width + k];
+        }
+    }
+    [
+        V::load(&planes[0]),
+        V::load(&planes[1]),
+        V::load(&planes[2]),
+        V::load(&planes[3]),
+    ]
+}
+
+/// Writes `rgba` to rows `start..start + valid` of `plane` (RGBA rows, flat).
+#[inline(always)]
+fn store<V: Lanes>(rgba: [V; 4], plane: &mut [V::T], start: usize, valid: usize) {
+    let rows = plane[4 * start..4 * (start + valid)].as_chunks_mut::<4>().0;
+    if valid == V::N {
+        V::store_rows4(rgba, rows);
+    } else {
+        let mut full = [[V::T::ZERO; 4]; MAX_LANES];
+        V::store_rows4(rgba, &mut full[..V::N]);
+        rows.copy_from_slice(&full[..valid]);
     }
 }
 
 impl<T: Real> Task<'_, '_, T> {
-    /// Loads the `N` rows starting at row `first` (absolute), or, for a short last block of
-    /// `valid` rows, those rows and copies of its first in the missing lanes (finite, and never
-    /// written back).
+    /// Loads the block of rows starting at row `first` (absolute); a short last block of
+    /// `valid` rows is padded (see [`rows`]).
     #[inline(always)]
-    fn load<const N: usize>(&self, first: usize, valid: usize) -> Block<T, N> {
-        let Inputs {
-            positions,
-            normals,
-            colors,
-        } = self.inputs;
-        let rows = |a: &[[T; 3]]| rows::<T, N>(a, first, valid);
+    fn load<V: Lanes<T = T>>(&self, first: usize, valid: usize) -> Block<V> {
+        let inputs = self.inputs;
         Block {
             positions: if self.kernel.plan.positions {
-                rows(positions)
+                rows(inputs.positions, first, valid)
             } else {
                 V3::zero()
             },
-            normals: rows(normals),
-            colors: colors.map(|c| {
-                let channel = |k: usize| {
-                    Pack(build(T::ONE, |j| {
-                        let r = first + if j < valid { j } else { 0 };
-                        if k < c.width {
-                            c.data[r * c.width + k]
-                        } else {
-                            T::ONE
-                        }
-                    }))
-                };
-                [channel(0), channel(1), channel(2), channel(3)]
-            }),
+            normals: rows(inputs.normals, first, valid),
+            colors: inputs.colors.map(|c| color_rows(c, first, valid)),
         }
     }
 }
 
 impl<T: Real> LaneWork for Task<'_, '_, T> {
     #[inline(always)]
-    fn run<const N: usize>(self) {
+    fn run<S: InstructionSet>(self) {
+        self.blocks::<T::Vector<S>>();
+    }
+}
+
+impl<T: Real> Task<'_, '_, T> {
+    /// Shades every row of the task, `V::N` at a time.
+    #[inline(always)]
+    fn blocks<V: Lanes<T = T>>(self) {
         let count = self.planes[0].len() / 4;
         let per_side = self.planes.len() / self.kernel.prepared.sides;
         let mut start = 0;
         while start < count {
-            let valid = N.min(count - start);
-            let block = self.load::<N>(self.first + start, valid);
+            let valid = V::N.min(count - start);
+            let block = self.load::<V>(self.first + start, valid);
             // Planes come side by side: the front's colours, then the back's.
             for (side, planes) in self.planes.chunks_mut(per_side).enumerate() {
                 let colours = self.kernel.block(&block, side);
-                for (plane, rgba) in planes.iter_mut().zip(&colours) {
-                    // Lanes to rows: one transpose, then one copy.
-                    let rows: [[T; 4]; N] = build([T::ZERO; 4], |j| {
-                        [rgba[0].0[j], rgba[1].0[j], rgba[2].0[j], rgba[3].0[j]]
-                    });
-                    let dst = plane[4 * start..4 * (start + valid)].as_chunks_mut::<4>().0;
-                    dst.copy_from_slice(&rows[..valid]);
+                for (plane, rgba) in planes.iter_mut().zip(colours) {
+                    store(rgba, plane, start, valid);
                 }
             }
             start += valid;
@@ -273,14 +293,19 @@ pub(crate) fn run<T: Real>(
 pub fn describe<T: Real>(scene: &Scene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
-    let (bytes, plan) = if exact || std::mem::size_of::<T>() == 8 {
-        (8, Plan::new(&Prepared::<f64>::new(scene, options)?))
+    let (bytes, lanes, plan) = if exact || std::mem::size_of::<T>() == 8 {
+        let plan = Plan::new(&Prepared::<f64>::new(scene, options)?);
+        (8, isa.lanes::<f64>(), plan)
     } else {
-        (4, Plan::new(&Prepared::<T>::new(scene, options)?))
+        (
+            4,
+            isa.lanes::<f32>(),
+            Plan::new(&Prepared::<T>::new(scene, options)?),
+        )
     };
     let mode = if exact { "exact" } else { "fast" };
     Ok(format!(
-        "{mode}: float{} arithmetic, {}, {LANES} vertices per block; {plan}",
+        "{mode}: float{} arithmetic, {}, {lanes} vertices per block; {plan}",
         bytes * 8,
         isa.name(),
     ))

@@ -251,6 +251,8 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
     else:
         import numba as nb
 
+        p, n = bench_vertices(64)
+        numba(p, n, bench_scenes()["1 directional"])  # compiles; starts the threading layer
         layer = nb.threading_layer()  # type: ignore[attr-defined]
         print(
             f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads, "
