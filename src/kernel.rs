@@ -353,32 +353,31 @@ impl<T: Real> Kernel<'_, T> {
         }
     }
 
-    /// The material of `side` (0 front, 1 back), with the vertex colours where
-    /// `GL_COLOR_MATERIAL` tracks them: ambient, diffuse, specular, emission, as RGBA lanes.
+    /// One colour of the material of `side` (0 front, 1 back) as RGBA lanes: `slot` 0 is the
+    /// ambient, 1 the diffuse, 2 the specular and 3 the emission colour; the vertex colour where
+    /// `GL_COLOR_MATERIAL` tracks it. One colour at a time: an array of all four would be
+    /// copied through memory.
     #[inline(always)]
-    fn material<V: Lanes<T = T>>(&self, side: usize, colors: Option<[V; 4]>) -> [[V; 4]; 4] {
-        let m = &self.prepared.materials[side];
-        let mut out = [
-            splat4(m.ambient),
-            splat4(m.diffuse),
-            splat4(m.specular),
-            splat4(m.emission),
-        ];
+    fn material<V: Lanes<T = T>>(
+        &self,
+        side: usize,
+        slot: usize,
+        colors: Option<[V; 4]>,
+    ) -> [V; 4] {
         if let (Some(cm), Some(c)) = (self.prepared.color_material, colors) {
-            if cm.applies_to(side == 1) {
-                let slots: &[usize] = match cm.mode {
-                    ColorMaterialMode::Ambient => &[0],
-                    ColorMaterialMode::Diffuse => &[1],
-                    ColorMaterialMode::Specular => &[2],
-                    ColorMaterialMode::Emission => &[3],
-                    ColorMaterialMode::AmbientAndDiffuse => &[0, 1],
-                };
-                for &k in slots {
-                    out[k] = c;
-                }
+            let tracked = match cm.mode {
+                ColorMaterialMode::Ambient => slot == 0,
+                ColorMaterialMode::Diffuse => slot == 1,
+                ColorMaterialMode::Specular => slot == 2,
+                ColorMaterialMode::Emission => slot == 3,
+                ColorMaterialMode::AmbientAndDiffuse => slot <= 1,
+            };
+            if tracked && cm.applies_to(side == 1) {
+                return c;
             }
         }
-        out
+        let m = &self.prepared.materials[side];
+        splat4([m.ambient, m.diffuse, m.specular, m.emission][slot])
     }
 
     /// The light sums of `lights` (the lights `first..` of the scene) at one block, for
@@ -536,9 +535,11 @@ impl<T: Real> Kernel<'_, T> {
         };
         let [ambient, diffuse, specular] = self.all_sums(p, &normal, side, view);
 
-        let [a, d, s, e] = self.material(side, input.colors);
+        let d = self.material(side, 1, input.colors);
         let alpha = d[3];
-        let (a, d, s, e) = (v3(a), v3(d), v3(s), v3(e));
+        let (a, d) = (v3(self.material(side, 0, input.colors)), v3(d));
+        let s = v3(self.material(side, 2, input.colors));
+        let e = v3(self.material(side, 3, input.colors));
         let global = V3::splat(prepared.global_ambient);
         let lit = e + a.mul_elements(global) + a.mul_elements(ambient) + d.mul_elements(diffuse);
         let specular = s.mul_elements(specular);

@@ -8,23 +8,28 @@
 //! gives the same bits; the one fused multiply-add ([`Lanes::square_error`]) computes an exact
 //! quantity, which the instruction sets without it compute exactly another way.
 
+mod pair;
 mod portable;
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod x86;
 
+use std::mem::MaybeUninit;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
+pub use pair::Pair;
 pub use portable::Pack;
 
 use crate::real::Real;
 
 /// The most lanes any implementation has: the size of the buffers that hold one block.
-pub const MAX_LANES: usize = 16;
+pub const MAX_LANES: usize = 64;
 
 /// The result of a lane-wise comparison.
 pub trait LaneMask:
     Copy + BitAnd<Output = Self> + BitOr<Output = Self> + Not<Output = Self>
 {
+    /// The number of lanes.
+    const N: usize;
     /// Every lane set to `b`.
     fn splat(b: bool) -> Self;
     /// Bit `i` set when lane `i` is.
@@ -136,15 +141,18 @@ pub trait Lanes:
         }
     }
 
-    /// Writes four lanes as `N` rows `[r, g, b, a]` (`rows` holds exactly `N`).
+    /// Writes four lanes as `N` rows `[r, g, b, a]` (`rows` holds exactly `N`; it need not be
+    /// initialised, and is written, never read).
     #[inline(always)]
-    fn store_rows4(rgba: [Self; 4], rows: &mut [[Self::T; 4]]) {
+    fn store_rows4(rgba: [Self; 4], rows: &mut [[MaybeUninit<Self::T>; 4]]) {
         let mut planes = [[Self::T::ZERO; MAX_LANES]; 4];
         for (plane, lanes) in planes.iter_mut().zip(rgba) {
             lanes.store(plane);
         }
         for (i, row) in rows.iter_mut().enumerate().take(Self::N) {
-            *row = [planes[0][i], planes[1][i], planes[2][i], planes[3][i]];
+            for (k, value) in row.iter_mut().enumerate() {
+                value.write(planes[k][i]);
+            }
         }
     }
 
@@ -368,61 +376,62 @@ pub fn normalize_and_length_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V) {
 fn normalize_by<V: Lanes, const DIVIDE: bool>(v: V3<V>) -> (V3<V>, V) {
     let len2 = v.dot(v);
     let ok = len2.ge(V::splat(V::T::MIN_POSITIVE)) & len2.le(V::splat(V::T::MAX));
+    if !ok.all() {
+        return rescaled::<V, DIVIDE>(&v);
+    }
     let len = len2.sqrt();
     let unit = if DIVIDE {
         v.div_by(len)
     } else {
         v.scale(V::splat(V::T::ONE) / len)
     };
-    if ok.all() {
-        return (unit, len);
-    }
-    rescaled::<V, DIVIDE>(v, len2, ok, unit, len)
+    (unit, len)
 }
 
-/// The lanes of [`normalize_and_length`] whose squared length is zero, subnormal, infinite or
-/// NaN, one at a time.
+/// [`normalize_and_length`] for a block with a lane whose squared length is zero, subnormal,
+/// infinite or NaN: those lanes one at a time. It takes `v` by reference and recomputes the
+/// rest, so the common path passes nothing through memory to it.
 #[cold]
 #[inline(never)]
-fn rescaled<V: Lanes, const DIVIDE: bool>(
-    v: V3<V>,
-    len2: V,
-    ok: V::Mask,
-    unit: V3<V>,
-    len: V,
-) -> (V3<V>, V) {
+fn rescaled<V: Lanes, const DIVIDE: bool>(v: &V3<V>) -> (V3<V>, V) {
     let buffer = |lanes: V| {
         let mut values = [V::T::ZERO; MAX_LANES];
         lanes.store(&mut values);
         values
     };
-    let (vx, vy, vz, len2) = (buffer(v.x), buffer(v.y), buffer(v.z), buffer(len2));
-    let (mut ux, mut uy, mut uz, mut l) =
-        (buffer(unit.x), buffer(unit.y), buffer(unit.z), buffer(len));
-    let ok = ok.bitmask();
-    for i in (0..V::N).filter(|&i| ok >> i & 1 == 0) {
+    let (vx, vy, vz) = (buffer(v.x), buffer(v.y), buffer(v.z));
+    let (mut ux, mut uy, mut uz, mut l) = (
+        [V::T::ZERO; MAX_LANES],
+        [V::T::ZERO; MAX_LANES],
+        [V::T::ZERO; MAX_LANES],
+        [V::T::ZERO; MAX_LANES],
+    );
+    for i in 0..V::N {
         let [x, y, z] = [vx[i], vy[i], vz[i]];
-        let (u, length) = if x == V::T::ZERO && y == V::T::ZERO && z == V::T::ZERO {
-            ([V::T::ZERO; 3], V::T::ZERO)
+        // The same operations as the vector path, lane by lane.
+        let len2 = x * x + y * y + z * z;
+        let scale = if len2 >= V::T::MIN_POSITIVE && len2 <= V::T::MAX {
+            V::T::ONE
+        } else if x == V::T::ZERO && y == V::T::ZERO && z == V::T::ZERO {
+            (ux[i], uy[i], uz[i], l[i]) = (V::T::ZERO, V::T::ZERO, V::T::ZERO, V::T::ZERO);
+            continue;
         } else if !(x.is_finite() && y.is_finite() && z.is_finite()) {
-            ([V::T::NAN; 3], V::T::NAN)
+            (ux[i], uy[i], uz[i], l[i]) = (V::T::NAN, V::T::NAN, V::T::NAN, V::T::NAN);
+            continue;
+        } else if len2 < V::T::MIN_POSITIVE {
+            V::T::UPSCALE
         } else {
-            let scale = if len2[i] < V::T::MIN_POSITIVE {
-                V::T::UPSCALE
-            } else {
-                V::T::DOWNSCALE
-            };
-            let (x, y, z) = (x * scale, y * scale, z * scale);
-            let length = (x * x + y * y + z * z).sqrt();
-            let u = if DIVIDE {
-                [x / length, y / length, z / length]
-            } else {
-                let r = V::T::ONE / length;
-                [x * r, y * r, z * r]
-            };
-            (u, length / scale)
+            V::T::DOWNSCALE
         };
-        (ux[i], uy[i], uz[i], l[i]) = (u[0], u[1], u[2], length);
+        let (x, y, z) = (x * scale, y * scale, z * scale);
+        let length = (x * x + y * y + z * z).sqrt();
+        let u = if DIVIDE {
+            [x / length, y / length, z / length]
+        } else {
+            let r = V::T::ONE / length;
+            [x * r, y * r, z * r]
+        };
+        (ux[i], uy[i], uz[i], l[i]) = (u[0], u[1], u[2], length / scale);
     }
     (
         V3 {

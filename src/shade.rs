@@ -5,6 +5,8 @@
 //! CPU has ([`crate::dispatch`]). Every row is computed independently of every other, so the
 //! result does not depend on the number of threads or the instruction set.
 
+use std::mem::MaybeUninit;
+
 use rayon::prelude::*;
 
 use crate::dispatch::{InstructionSet, Isa, LaneWork};
@@ -20,7 +22,7 @@ pub use crate::kernel::VertexColors;
 
 /// Rows per parallel task: enough work to amortise rayon's scheduling for one light, few enough
 /// that a 10^4-row call still spreads over every core.
-const ROWS_PER_TASK: usize = 2048;
+const ROWS_PER_TASK: usize = 8192;
 
 /// The arrays of one call.
 #[derive(Clone, Copy)]
@@ -35,7 +37,7 @@ struct Task<'a, 'b, T: Real> {
     kernel: &'a Kernel<'a, T>,
     inputs: Inputs<'a, T>,
     first: usize,
-    planes: &'b mut [&'a mut [T]],
+    planes: &'b mut [&'a mut [MaybeUninit<T>]],
 }
 
 /// The `V::N` rows of `a` from `first` as lanes; a short block of `valid` rows repeats its
@@ -73,12 +75,12 @@ fn color_rows<V: Lanes>(c: VertexColors<'_, V::T>, first: usize, valid: usize) -
 
 /// Writes `rgba` to rows `start..start + valid` of `plane` (RGBA rows, flat).
 #[inline(always)]
-fn store<V: Lanes>(rgba: [V; 4], plane: &mut [V::T], start: usize, valid: usize) {
+fn store<V: Lanes>(rgba: [V; 4], plane: &mut [MaybeUninit<V::T>], start: usize, valid: usize) {
     let rows = plane[4 * start..4 * (start + valid)].as_chunks_mut::<4>().0;
     if valid == V::N {
         V::store_rows4(rgba, rows);
     } else {
-        let mut full = [[V::T::ZERO; 4]; MAX_LANES];
+        let mut full = [[MaybeUninit::uninit(); 4]; MAX_LANES];
         V::store_rows4(rgba, &mut full[..V::N]);
         rows.copy_from_slice(&full[..valid]);
     }
@@ -138,7 +140,7 @@ fn check_arrays<T: Real>(
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
     options: &ShadeOptions,
-    out: &[T],
+    out_len: usize,
 ) -> Result<(), Error> {
     let n = positions.len();
     if normals.len() != n {
@@ -162,10 +164,9 @@ fn check_arrays<T: Real>(
         _ => {}
     }
     let planes = scene.output_count();
-    if out.len() != planes * n * 4 {
+    if out_len != planes * n * 4 {
         return Err(Error::value(format!(
-            "out must hold {planes} x {n} x 4 values, got {}",
-            out.len()
+            "out must hold {planes} x {n} x 4 values, got {out_len}"
         )));
     }
     Ok(())
@@ -194,7 +195,31 @@ pub fn shade<T: Real>(
     options: &ShadeOptions,
     out: &mut [T],
 ) -> Result<(), Error> {
-    check_arrays(scene, positions, normals, colors, options, out)?;
+    shade_uninit(scene, positions, normals, colors, options, as_uninit(out))
+}
+
+/// `out` as memory that may be written, not read: [`shade_uninit`] writes every element of
+/// it and never a `MaybeUninit::uninit()`, so the initialised `out` stays initialised.
+#[allow(unsafe_code)]
+pub(crate) fn as_uninit<T>(out: &mut [T]) -> &mut [MaybeUninit<T>] {
+    // SAFETY: MaybeUninit<T> has the layout of T; the callee only writes initialised values.
+    unsafe { std::slice::from_raw_parts_mut(out.as_mut_ptr().cast(), out.len()) }
+}
+
+/// [`shade`] into memory that need not be initialised (a fresh numpy array): every element
+/// of `out` is written when this returns `Ok`, none is read.
+///
+/// # Errors
+/// As [`shade`].
+pub fn shade_uninit<T: Real>(
+    scene: &Scene,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    options: &ShadeOptions,
+    out: &mut [MaybeUninit<T>],
+) -> Result<(), Error> {
+    check_arrays(scene, positions, normals, colors, options, out.len())?;
     let widen = options.accuracy == Accuracy::Exact && std::mem::size_of::<T>() < 8;
     if !widen {
         let prepared = Prepared::<T>::new(scene, options)?;
@@ -233,10 +258,10 @@ pub fn shade<T: Real>(
         &positions,
         &wide(normals),
         colors,
-        &mut result,
+        as_uninit(&mut result),
     );
     for (d, s) in out.iter_mut().zip(result) {
-        *d = T::from_f64(s);
+        d.write(T::from_f64(s));
     }
     Ok(())
 }
@@ -249,7 +274,7 @@ pub(crate) fn run<T: Real>(
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
-    out: &mut [T],
+    out: &mut [MaybeUninit<T>],
 ) {
     let n = normals.len();
     if n == 0 {
@@ -262,14 +287,14 @@ pub(crate) fn run<T: Real>(
         colors,
     };
     // Regroup the planes chunk by chunk, so each task owns the same rows of every plane.
-    let mut tasks: Vec<Vec<&mut [T]>> =
+    let mut tasks: Vec<Vec<&mut [MaybeUninit<T>]>> =
         (0..n.div_ceil(ROWS_PER_TASK)).map(|_| Vec::new()).collect();
     for plane in out.chunks_mut(n * 4) {
         for (task, rows) in tasks.iter_mut().zip(plane.chunks_mut(ROWS_PER_TASK * 4)) {
             task.push(rows);
         }
     }
-    let work = |(t, mut planes): (usize, Vec<&mut [T]>)| {
+    let work = |(t, mut planes): (usize, Vec<&mut [MaybeUninit<T>]>)| {
         let task = Task {
             kernel: &kernel,
             inputs,

@@ -15,7 +15,7 @@ use crate::plan::Plan;
 use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
-use crate::shade::{run, VertexColors};
+use crate::shade::{as_uninit, run, VertexColors};
 
 const FEATURES: u32 = 14;
 
@@ -178,7 +178,13 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
     });
     let mut out = vec![T::ZERO; scene.output_count() * 4 * normals.len()];
     run(
-        &prepared, &plan, isa, &positions, &normals, colors, &mut out,
+        &prepared,
+        &plan,
+        isa,
+        &positions,
+        &normals,
+        colors,
+        as_uninit(&mut out),
     );
     out.iter().map(|x| x.to_f64().to_bits()).collect()
 }

@@ -31,6 +31,8 @@ fn build<U: Copy + Default, const N: usize>(f: impl Fn(usize) -> U) -> [U; N] {
 }
 
 impl<const N: usize> LaneMask for PackMask<N> {
+    const N: usize = N;
+
     #[inline(always)]
     fn splat(b: bool) -> Self {
         Self([b; N])

@@ -48,29 +48,10 @@ use std::arch::x86_64::{
     _mm_sub_epi64, _mm_sub_pd, _mm_sub_ps, _mm_xor_pd, _mm_xor_ps, _CMP_EQ_OQ, _CMP_LE_OQ,
     _CMP_LT_OQ,
 };
+use std::mem::MaybeUninit;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use super::{LaneBits, LaneMask, Lanes, V3};
-
-/// Two registers of `f64` that hold the widened lanes of one register of `f32`.
-#[derive(Clone, Copy, Debug)]
-pub(crate) struct Pair<W>(W, W);
-
-impl<W: Add<Output = W>> Add for Pair<W> {
-    type Output = Self;
-    #[inline(always)]
-    fn add(self, o: Self) -> Self {
-        Self(self.0 + o.0, self.1 + o.1)
-    }
-}
-
-impl<W: Sub<Output = W>> Sub for Pair<W> {
-    type Output = Self;
-    #[inline(always)]
-    fn sub(self, o: Self) -> Self {
-        Self(self.0 - o.0, self.1 - o.1)
-    }
-}
+use super::{LaneBits, LaneMask, Lanes, Pair, V3};
 
 /// The binary operators of a register type, one intrinsic each.
 macro_rules! binary {
@@ -106,6 +87,8 @@ macro_rules! vector_mask {
         }
 
         impl LaneMask for $mask {
+            const N: usize = $lanes;
+
             #[inline(always)]
             #[allow(unused_unsafe)]
             fn splat(b: bool) -> Self {
@@ -157,6 +140,8 @@ macro_rules! k_mask {
         }
 
         impl LaneMask for $mask {
+            const N: usize = $lanes;
+
             #[inline(always)]
             fn splat(b: bool) -> Self {
                 Self(if b { <$int>::MAX } else { 0 })
@@ -347,7 +332,7 @@ macro_rules! float_lanes {
             }
         }
         #[inline(always)]
-        fn store_rows4(rgba: [Self; 4], rows: &mut [[Self::T; 4]]) {
+        fn store_rows4(rgba: [Self; 4], rows: &mut [[MaybeUninit<Self::T>; 4]]) {
             let flat = rows[..Self::N].as_flattened_mut();
             unsafe { $store4([rgba[0].0, rgba[1].0, rgba[2].0, rgba[3].0], flat) }
         }
@@ -624,7 +609,7 @@ unsafe fn load3_f32x16(flat: &[f32]) -> [__m512; 3] {
 /// r, g, b and a registers as 16 rows of `[r, g, b, a]` (64 values): a 4×4 transpose within
 /// each 128-bit quarter, then one of the quarters.
 #[inline(always)]
-unsafe fn store4_f32x16([r, g, b, a]: [__m512; 4], flat: &mut [f32]) {
+unsafe fn store4_f32x16([r, g, b, a]: [__m512; 4], flat: &mut [MaybeUninit<f32>]) {
     let flat = &mut flat[..64];
     let (rg_lo, rg_hi) = (_mm512_unpacklo_ps(r, g), _mm512_unpackhi_ps(r, g));
     let (ba_lo, ba_hi) = (_mm512_unpacklo_ps(b, a), _mm512_unpackhi_ps(b, a));
@@ -639,7 +624,7 @@ unsafe fn store4_f32x16([r, g, b, a]: [__m512; 4], flat: &mut [f32]) {
     let v1 = _mm512_shuffle_f32x4::<0x44>(ps(row2), ps(row3));
     let v2 = _mm512_shuffle_f32x4::<0xEE>(ps(row0), ps(row1));
     let v3 = _mm512_shuffle_f32x4::<0xEE>(ps(row2), ps(row3));
-    let p = flat.as_mut_ptr();
+    let p = flat.as_mut_ptr().cast::<f32>();
     _mm512_storeu_ps(p, _mm512_shuffle_f32x4::<0x88>(v0, v1));
     _mm512_storeu_ps(p.add(16), _mm512_shuffle_f32x4::<0xDD>(v0, v1));
     _mm512_storeu_ps(p.add(32), _mm512_shuffle_f32x4::<0x88>(v2, v3));
@@ -666,7 +651,7 @@ unsafe fn load3_f64x8(flat: &[f64]) -> [__m512d; 3] {
 
 /// r, g, b and a registers as 8 rows of `[r, g, b, a]` (32 values).
 #[inline(always)]
-unsafe fn store4_f64x8([r, g, b, a]: [__m512d; 4], flat: &mut [f64]) {
+unsafe fn store4_f64x8([r, g, b, a]: [__m512d; 4], flat: &mut [MaybeUninit<f64>]) {
     let flat = &mut flat[..32];
     // Quarter j of rg_even holds (r, g) of row 2j, of rg_odd of row 2j + 1; ba likewise.
     let (rg_even, rg_odd) = (_mm512_unpacklo_pd(r, g), _mm512_unpackhi_pd(r, g));
@@ -676,7 +661,7 @@ unsafe fn store4_f64x8([r, g, b, a]: [__m512d; 4], flat: &mut [f64]) {
     let o15 = _mm512_shuffle_f64x2::<0x88>(rg_odd, ba_odd);
     let e26 = _mm512_shuffle_f64x2::<0xDD>(rg_even, ba_even);
     let o37 = _mm512_shuffle_f64x2::<0xDD>(rg_odd, ba_odd);
-    let p = flat.as_mut_ptr();
+    let p = flat.as_mut_ptr().cast::<f64>();
     _mm512_storeu_pd(p, _mm512_shuffle_f64x2::<0x88>(e04, o15));
     _mm512_storeu_pd(p.add(8), _mm512_shuffle_f64x2::<0x88>(e26, o37));
     _mm512_storeu_pd(p.add(16), _mm512_shuffle_f64x2::<0xDD>(e04, o15));

@@ -1,8 +1,10 @@
 //! The binding of `shade`.
 
+use std::mem::MaybeUninit;
+
 use numpy::{
-    Element, PyArray1, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2,
-    PyUntypedArray, PyUntypedArrayMethods,
+    Element, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
+    PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
@@ -47,9 +49,10 @@ fn shade_typed<'py, T: Element + Real>(
     let run =
         |dst: &mut [T]| crate::shade::shade(&call.scene, p, nr, vertex_colors, &call.options, dst);
     let Some(out) = out else {
-        let mut dst = vec![T::ZERO; planes * n * 4];
-        py.detach(|| run(&mut dst)).map_err(to_pyerr)?;
-        return Ok(PyArray1::from_vec(py, dst).reshape(shape)?.into_any());
+        let array = filled_array(py, &shape, |dst| {
+            crate::shade::shade_uninit(&call.scene, p, nr, vertex_colors, &call.options, dst)
+        })?;
+        return Ok(array.into_any());
     };
     let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
         PyTypeError::new_err(format!(
@@ -72,6 +75,26 @@ fn shade_typed<'py, T: Element + Real>(
         .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
     py.detach(|| run(dst)).map_err(to_pyerr)?;
     Ok(array.clone().into_any())
+}
+
+/// A new C-contiguous array of `shape` from numpy's allocator, filled by `write` with the GIL
+/// released. It starts uninitialised, as numpy's own ufunc outputs do (numpy also advises huge
+/// pages for large arrays): clearing it first would cost a pass over memory as long as
+/// shading one light.
+#[allow(unsafe_code)]
+fn filled_array<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+    write: impl FnOnce(&mut [MaybeUninit<T>]) -> Result<(), crate::Error> + Send,
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    // SAFETY: the array reaches Python only after `write` returned Ok, which means it wrote
+    // every element; on an error it is dropped unread.
+    let array = unsafe { PyArrayDyn::<T>::new(py, shape, false) };
+    // SAFETY: the fresh array is C-contiguous and nothing else refers to its data yet;
+    // MaybeUninit<T> has T's layout and may hold anything.
+    let dst = unsafe { std::slice::from_raw_parts_mut(array.data().cast(), array.len()) };
+    py.detach(|| write(dst)).map_err(to_pyerr)?;
+    Ok(array)
 }
 
 /// The options of a `shade` call from the binding's arguments.
