@@ -19,6 +19,9 @@ use crate::shade::{as_uninit, run, VertexColors};
 
 const FEATURES: u32 = 14;
 
+/// Vertices per subset: more than two blocks of 64.
+const VERTICES: usize = 165;
+
 /// A deterministic stream of numbers in [-1, 1) (a 64-bit LCG; no dependency).
 struct Numbers(u64);
 
@@ -143,12 +146,13 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
 }
 
 /// Vertices around the lights: random rows, and the awkward ones (a zero normal, a non-unit
-/// normal, a vertex at a light, NaN rows), 37 in all so the last block is short.
+/// normal, a vertex at a light, NaN rows), 165 in all: two full blocks of the widest registers
+/// (64 lanes) and a short one.
 fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
     let mut numbers = Numbers(7);
-    let mut positions: Vec<[f64; 3]> = (0..37).map(|_| numbers.vec3(2.0)).collect();
-    let mut normals: Vec<[f64; 3]> = (0..37).map(|_| numbers.vec3(1.0)).collect();
-    let colors: Vec<f64> = (0..37 * 4).map(|_| numbers.next().abs()).collect();
+    let mut positions: Vec<[f64; 3]> = (0..VERTICES).map(|_| numbers.vec3(2.0)).collect();
+    let mut normals: Vec<[f64; 3]> = (0..VERTICES).map(|_| numbers.vec3(1.0)).collect();
+    let colors: Vec<f64> = (0..VERTICES * 4).map(|_| numbers.next().abs()).collect();
     normals[3] = [0.0; 3];
     normals[4] = [0.0, 0.0, 3.0];
     positions[5] = [1.0, 2.0, 1.0];

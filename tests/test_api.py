@@ -109,6 +109,28 @@ def test_out_is_filled_and_returned(dtype: Any) -> None:
     np.testing.assert_array_equal(out, gs.shade(p, n, scene))
 
 
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("n", [1, 63, 64, 65, 200, 20_000])
+@pytest.mark.parametrize("two_side,separate", [(False, False), (True, False), (True, True)])
+def test_new_outputs_are_written_everywhere(
+    dtype: Any, n: int, two_side: bool, separate: bool
+) -> None:
+    # New results start uninitialised (as numpy's ufunc outputs do): memory just freed full of
+    # a sentinel is what the allocator hands out next, so an unwritten element would show.
+    p, normals = vertices(n, dtype)
+    scene = gs.Scene(lights=SCENE.lights, two_side=two_side, separate_specular=separate)
+    planes = len(scene.outputs)
+    shape = (n, 4) if planes == 1 else (planes, n, 4)
+    expected = gs.shade(p, normals, scene, out=np.full(shape, 7.0, dtype))
+    for _ in range(3):
+        sentinel = np.full(shape, 7.0, dtype)
+        del sentinel
+        result = gs.shade(p, normals, scene)
+        assert result.shape == shape and result.dtype == dtype
+        np.testing.assert_array_equal(result, expected)
+        assert (result <= 1).all()
+
+
 # --- bad input -------------------------------------------------------------------------------
 
 P, N = vertices(4)
