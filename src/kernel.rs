@@ -332,7 +332,21 @@ impl<T: Real> Kernel<'_, T> {
                 let h = match light.source {
                     Source::Directional {
                         halfway: Some(h), ..
-                    } => V3::splat(h),
+                    } => {
+                        let power = cos_pow(
+                            side.unit.dot(V3::splat(h)),
+                            side.unit,
+                            V3::splat(h),
+                            s,
+                            &side.scale,
+                        );
+                        // A constant ĥ is zero in every lane or in none.
+                        return if h == [T::ZERO; 3] {
+                            V::splat(T::ZERO)
+                        } else {
+                            power
+                        };
+                    }
                     _ => normalize_or_zero_fast(vp + view),
                 };
                 let power = cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
@@ -465,7 +479,12 @@ impl<T: Real> Kernel<'_, T> {
                 narrow(total[2], error[2]),
             ]
         };
-        [sat3(sums[0]), sat3(sums[1]), sat3(sums[2])]
+        let ambient = if self.plan.ambient {
+            sat3(sums[0])
+        } else {
+            sums[0]
+        };
+        [ambient, sat3(sums[1]), sat3(sums[2])]
     }
 
     /// The normal of the front side as the plan needs it.
@@ -541,7 +560,15 @@ impl<T: Real> Kernel<'_, T> {
         let s = v3(self.material(side, 2, input.colors));
         let e = v3(self.material(side, 3, input.colors));
         let global = V3::splat(prepared.global_ambient);
-        let lit = e + a.mul_elements(global) + a.mul_elements(ambient) + d.mul_elements(diffuse);
+        // Without an ambient term the sum is +0, and a·(+0) could only change the sign of a
+        // zero, which the final clamp makes +0 anyway: the same bits without it.
+        let base = e + a.mul_elements(global);
+        let base = if plan.ambient {
+            base + a.mul_elements(ambient)
+        } else {
+            base
+        };
+        let lit = base + d.mul_elements(diffuse);
         let specular = s.mul_elements(specular);
         if prepared.separate_specular {
             [

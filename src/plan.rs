@@ -69,6 +69,8 @@ pub struct Plan {
     pub normal_length: bool,
     /// The vertex-to-eye direction VP_e is computed per vertex (local viewer and a specular term).
     pub view: bool,
+    /// Some light has an ambient term: the sum Σ w·a_cli is formed at all.
+    pub ambient: bool,
 }
 
 impl Plan {
@@ -126,6 +128,7 @@ impl Plan {
             unit_normal: prepared.normalize || power,
             normal_length: !prepared.normalize && power && prepared.specular == Specular::Blinn,
             view: local && power,
+            ambient: lights.iter().any(|light| light.ambient),
             lights,
             sides,
         }
@@ -155,6 +158,7 @@ impl Plan {
             unit_normal: true,
             normal_length: !prepared.normalize,
             view: matches!(prepared.viewer, Viewer::Local(_)),
+            ambient: true,
         }
     }
 }
