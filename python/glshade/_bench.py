@@ -51,7 +51,7 @@ def numpy_area_normals(v: NDArray[np.float64], f: NDArray[np.int64]) -> NDArray[
 
 
 def in_rounds(
-    methods: dict[str, Callable[[], Any]], repeat: int, settle: float
+    methods: dict[str, Callable[[], Any]], repeat: int, settle: float, burst: int = 1
 ) -> dict[str, list[float]]:
     """Seconds per call of each method, timed in rounds: every round runs every method once, so
     all methods see the same load on a shared machine (ratios are taken within a round). The
@@ -60,7 +60,11 @@ def in_rounds(
 
     Each call starts `settle` seconds after the previous one ended: numpy's OpenBLAS keeps its
     threads spinning for about 0.1 s after a call, and on a 2-core machine they would take a
-    core from whichever method runs next."""
+    core from whichever method runs next.
+
+    With `burst` > 1 a method runs that many times in a row in its turn and the fastest call
+    counts: its steady rate, without what the first call pays to wake a core that idled while
+    a single-threaded method ran (see `bench_shade`)."""
     for call in methods.values():
         call()  # warm-up
     names = list(methods)
@@ -69,9 +73,12 @@ def in_rounds(
         order = names[r % len(names) :] + names[: r % len(names)]
         for name in order[::-1] if r % 2 else order:
             time.sleep(settle)
-            start = time.perf_counter()
-            methods[name]()
-            times[name].append(time.perf_counter() - start)
+            fastest = float("inf")
+            for _ in range(burst):
+                start = time.perf_counter()
+                methods[name]()
+                fastest = min(fastest, time.perf_counter() - start)
+            times[name].append(fastest)
     return times
 
 

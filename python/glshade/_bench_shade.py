@@ -239,12 +239,33 @@ def call_overhead(repeat: int = 2000) -> float:
     return statistics.median(times)
 
 
+BURST = 3
+
+
+def wake_cost(n: int = 1_000_000, repeat: int = 7) -> tuple[float, float]:
+    """Median seconds of `gs.shade` (one directional light, `n` vertices) right after 50 ms of
+    idle, and back to back."""
+    scene = bench_scenes()["1 directional"]
+    p, normals = bench_vertices(n)
+    cold, warm = [], []
+    for _ in range(repeat):
+        time.sleep(0.05)
+        for times in (cold, warm):
+            start = time.perf_counter()
+            gs.shade(p, normals, scene)
+            times.append(time.perf_counter() - start)
+    return statistics.median(cold), statistics.median(warm)
+
+
 def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
     """Prints, for every scene and size, the median million vertices per second of glshade,
     numpy and numba, and glshade's speed-up over each (the median of per-round ratios)."""
     numba = numba_shade()
     threads = os.environ.get("RAYON_NUM_THREADS") or f"{os.cpu_count()} (all cores)"
-    print(f"float32, a new (n, 4) array per call; {repeat} rounds, each method once per round")
+    print(
+        f"float32, a new (n, 4) array per call; {repeat} rounds; in each round every method "
+        f"runs {BURST} times in a row and its fastest call counts"
+    )
     print(f"glshade threads: {threads}; numpy {np.__version__}", end="")
     if isinstance(numba, str):
         print(f"\n{numba}")
@@ -259,6 +280,11 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
             f"{layer} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
         )
     print(f"per-call overhead: {call_overhead() * 1e6:.1f} us (16 vertices, one light, median)")
+    cold, warm = wake_cost()
+    print(
+        f"waking idle cores: {cold * 1e3:.2f} ms for the first call after 50 ms of idle, "
+        f"{warm * 1e3:.2f} ms for the next (10^6 vertices, one light, medians)"
+    )
     for name, scene in bench_scenes().items():
         print(f"\n{name}: {scene.plan()}")
         print(
@@ -273,7 +299,7 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
             }
             if not isinstance(numba, str):
                 methods["numba"] = functools.partial(numba, p, normals, scene)
-            times = in_rounds(methods, repeat, settle=0.0)
+            times = in_rounds(methods, repeat, settle=0.0, burst=BURST)
             rate = {k: n / statistics.median(t) / 1e6 for k, t in times.items()}
 
             def ratio(baseline: str, times: dict[str, list[float]] = times) -> str:
