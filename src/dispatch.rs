@@ -8,8 +8,10 @@
 //! Every lane runs the same IEEE operations, so every instruction set gives the same bits (a
 //! test checks it).
 //!
-//! This and `lanes::x86` are the crate's only `unsafe`: calling a `#[target_feature]` function
-//! is sound only on a CPU with those features, which [`Isa::supported`] has checked.
+//! `unsafe` appears here and in `lanes::x86` (calling a `#[target_feature]` function is sound
+//! only on a CPU with those features, which [`Isa::supported`] has checked), and in two
+//! functions that hand memory to be written, not read, to `shade` (`shade::as_uninit`, and
+//! the binding's new numpy arrays).
 #![allow(unsafe_code)]
 
 use std::sync::OnceLock;
