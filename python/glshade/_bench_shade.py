@@ -247,7 +247,8 @@ def wake_cost(n: int = 1_000_000, repeat: int = 7) -> tuple[float, float]:
     idle, and back to back."""
     scene = bench_scenes()["1 directional"]
     p, normals = bench_vertices(n)
-    cold, warm = [], []
+    cold: list[float] = []
+    warm: list[float] = []
     for _ in range(repeat):
         time.sleep(0.05)
         for times in (cold, warm):
@@ -272,8 +273,8 @@ def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
     else:
         import numba as nb
 
-        p, n = bench_vertices(64)
-        numba(p, n, bench_scenes()["1 directional"])  # compiles; starts the threading layer
+        # Compiles the kernel and starts the threading layer, which is named only after that.
+        numba(*bench_vertices(64), bench_scenes()["1 directional"])
         layer = nb.threading_layer()  # type: ignore[attr-defined]
         print(
             f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads, "

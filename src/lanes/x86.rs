@@ -15,38 +15,40 @@
 use std::arch::x86_64::{
     __m128, __m128d, __m128i, __m256, __m256d, __m256i, __m512, __m512d, __m512i, _mm256_add_epi32,
     _mm256_add_epi64, _mm256_add_pd, _mm256_add_ps, _mm256_and_pd, _mm256_and_ps, _mm256_and_si256,
-    _mm256_blendv_pd, _mm256_blendv_ps, _mm256_castpd_si256, _mm256_castps256_ps128,
-    _mm256_castps_si256, _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_cmp_pd, _mm256_cmp_ps,
-    _mm256_cvtpd_ps, _mm256_cvtps_pd, _mm256_div_pd, _mm256_div_ps, _mm256_extractf128_ps,
-    _mm256_fmsub_pd, _mm256_fmsub_ps, _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd,
-    _mm256_max_ps, _mm256_min_pd, _mm256_min_ps, _mm256_movemask_pd, _mm256_movemask_ps,
-    _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd, _mm256_or_ps, _mm256_or_si256, _mm256_set1_epi32,
-    _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128, _mm256_sll_epi32,
-    _mm256_sll_epi64, _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32, _mm256_srl_epi64,
-    _mm256_storeu_pd, _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64, _mm256_sub_pd,
-    _mm256_sub_ps, _mm256_xor_pd, _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64, _mm512_add_pd,
-    _mm512_add_ps, _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512, _mm512_castps256_ps512,
-    _mm512_castps512_ps256, _mm512_castps_pd, _mm512_castps_si512, _mm512_castsi512_pd,
-    _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask, _mm512_cvtpd_ps, _mm512_cvtps_pd,
-    _mm512_div_pd, _mm512_div_ps, _mm512_extractf64x4_pd, _mm512_fmsub_pd, _mm512_fmsub_ps,
-    _mm512_insertf64x4, _mm512_loadu_pd, _mm512_loadu_ps, _mm512_mask_blend_pd,
-    _mm512_mask_blend_ps, _mm512_max_pd, _mm512_max_ps, _mm512_min_pd, _mm512_min_ps,
-    _mm512_mul_pd, _mm512_mul_ps, _mm512_or_si512, _mm512_permutex2var_pd, _mm512_permutex2var_ps,
-    _mm512_set1_epi32, _mm512_set1_epi64, _mm512_set1_pd, _mm512_set1_ps, _mm512_shuffle_f32x4,
-    _mm512_shuffle_f64x2, _mm512_sll_epi32, _mm512_sll_epi64, _mm512_sqrt_pd, _mm512_sqrt_ps,
-    _mm512_srl_epi32, _mm512_srl_epi64, _mm512_storeu_pd, _mm512_storeu_ps, _mm512_sub_epi32,
-    _mm512_sub_epi64, _mm512_sub_pd, _mm512_sub_ps, _mm512_unpackhi_pd, _mm512_unpackhi_ps,
-    _mm512_unpacklo_pd, _mm512_unpacklo_ps, _mm512_xor_si512, _mm_add_epi32, _mm_add_epi64,
-    _mm_add_pd, _mm_add_ps, _mm_and_pd, _mm_and_ps, _mm_and_si128, _mm_andnot_pd, _mm_andnot_ps,
-    _mm_castpd_si128, _mm_castps_si128, _mm_castsi128_pd, _mm_castsi128_ps, _mm_cmpeq_pd,
-    _mm_cmpeq_ps, _mm_cmple_pd, _mm_cmple_ps, _mm_cmplt_pd, _mm_cmplt_ps, _mm_cvtpd_ps,
-    _mm_cvtps_pd, _mm_cvtsi32_si128, _mm_div_pd, _mm_div_ps, _mm_loadu_pd, _mm_loadu_ps,
-    _mm_max_pd, _mm_max_ps, _mm_min_pd, _mm_min_ps, _mm_movehl_ps, _mm_movelh_ps, _mm_movemask_pd,
-    _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps, _mm_or_pd, _mm_or_ps, _mm_or_si128, _mm_set1_epi32,
-    _mm_set1_epi64x, _mm_set1_pd, _mm_set1_ps, _mm_sll_epi32, _mm_sll_epi64, _mm_sqrt_pd,
-    _mm_sqrt_ps, _mm_srl_epi32, _mm_srl_epi64, _mm_storeu_pd, _mm_storeu_ps, _mm_sub_epi32,
-    _mm_sub_epi64, _mm_sub_pd, _mm_sub_ps, _mm_xor_pd, _mm_xor_ps, _CMP_EQ_OQ, _CMP_LE_OQ,
-    _CMP_LT_OQ,
+    _mm256_blend_ps, _mm256_blendv_pd, _mm256_blendv_ps, _mm256_castpd_ps, _mm256_castpd_si256,
+    _mm256_castps256_ps128, _mm256_castps_pd, _mm256_castps_si256, _mm256_castsi256_pd,
+    _mm256_castsi256_ps, _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps, _mm256_cvtps_pd,
+    _mm256_div_pd, _mm256_div_ps, _mm256_extractf128_ps, _mm256_fmsub_pd, _mm256_fmsub_ps,
+    _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd, _mm256_min_ps,
+    _mm256_movemask_pd, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd,
+    _mm256_or_ps, _mm256_or_si256, _mm256_permute2f128_ps, _mm256_permutevar8x32_ps,
+    _mm256_set1_epi32, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128,
+    _mm256_sll_epi32, _mm256_sll_epi64, _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32,
+    _mm256_srl_epi64, _mm256_storeu_pd, _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64,
+    _mm256_sub_pd, _mm256_sub_ps, _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd,
+    _mm256_unpacklo_ps, _mm256_xor_pd, _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64,
+    _mm512_add_pd, _mm512_add_ps, _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512,
+    _mm512_castps256_ps512, _mm512_castps512_ps256, _mm512_castps_pd, _mm512_castps_si512,
+    _mm512_castsi512_pd, _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask,
+    _mm512_cvtpd_ps, _mm512_cvtps_pd, _mm512_div_pd, _mm512_div_ps, _mm512_extractf64x4_pd,
+    _mm512_fmsub_pd, _mm512_fmsub_ps, _mm512_insertf64x4, _mm512_loadu_pd, _mm512_loadu_ps,
+    _mm512_mask_blend_pd, _mm512_mask_blend_ps, _mm512_max_pd, _mm512_max_ps, _mm512_min_pd,
+    _mm512_min_ps, _mm512_mul_pd, _mm512_mul_ps, _mm512_or_si512, _mm512_permutex2var_pd,
+    _mm512_permutex2var_ps, _mm512_set1_epi32, _mm512_set1_epi64, _mm512_set1_pd, _mm512_set1_ps,
+    _mm512_shuffle_f32x4, _mm512_shuffle_f64x2, _mm512_sll_epi32, _mm512_sll_epi64, _mm512_sqrt_pd,
+    _mm512_sqrt_ps, _mm512_srl_epi32, _mm512_srl_epi64, _mm512_storeu_pd, _mm512_storeu_ps,
+    _mm512_sub_epi32, _mm512_sub_epi64, _mm512_sub_pd, _mm512_sub_ps, _mm512_unpackhi_pd,
+    _mm512_unpackhi_ps, _mm512_unpacklo_pd, _mm512_unpacklo_ps, _mm512_xor_si512, _mm_add_epi32,
+    _mm_add_epi64, _mm_add_pd, _mm_add_ps, _mm_and_pd, _mm_and_ps, _mm_and_si128, _mm_andnot_pd,
+    _mm_andnot_ps, _mm_castpd_si128, _mm_castps_si128, _mm_castsi128_pd, _mm_castsi128_ps,
+    _mm_cmpeq_pd, _mm_cmpeq_ps, _mm_cmple_pd, _mm_cmple_ps, _mm_cmplt_pd, _mm_cmplt_ps,
+    _mm_cvtpd_ps, _mm_cvtps_pd, _mm_cvtsi32_si128, _mm_div_pd, _mm_div_ps, _mm_loadu_pd,
+    _mm_loadu_ps, _mm_max_pd, _mm_max_ps, _mm_min_pd, _mm_min_ps, _mm_movehl_ps, _mm_movelh_ps,
+    _mm_movemask_pd, _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps, _mm_or_pd, _mm_or_ps, _mm_or_si128,
+    _mm_set1_epi32, _mm_set1_epi64x, _mm_set1_pd, _mm_set1_ps, _mm_sll_epi32, _mm_sll_epi64,
+    _mm_sqrt_pd, _mm_sqrt_ps, _mm_srl_epi32, _mm_srl_epi64, _mm_storeu_pd, _mm_storeu_ps,
+    _mm_sub_epi32, _mm_sub_epi64, _mm_sub_pd, _mm_sub_ps, _mm_xor_pd, _mm_xor_ps, _CMP_EQ_OQ,
+    _CMP_LE_OQ, _CMP_LT_OQ,
 };
 use std::mem::MaybeUninit;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
@@ -486,7 +488,7 @@ float_lanes!(
     ),
     narrow |w| _mm256_set_m128(_mm256_cvtpd_ps(w.1 .0), _mm256_cvtpd_ps(w.0 .0)),
     square_error (|x, square| _mm256_fmsub_ps(x, x, square)),
-    rows default
+    rows (load3_f32x8, store4_f32x8)
 );
 
 float_lanes!(
@@ -535,6 +537,49 @@ bits!(
     _mm512_set1_epi64,
     i64
 );
+
+/// 8 rows of `[x, y, z]` (24 values) as x, y and z registers: each component sits in three
+/// disjoint positions of the three loaded registers, so two blends gather it and one permute
+/// orders it.
+#[inline(always)]
+unsafe fn load3_f32x8(flat: &[f32]) -> [__m256; 3] {
+    let flat = &flat[..24];
+    let p = flat.as_ptr();
+    let (a, b, c) = (
+        _mm256_loadu_ps(p),
+        _mm256_loadu_ps(p.add(8)),
+        _mm256_loadu_ps(p.add(16)),
+    );
+    let order = |i: [i32; 8]| std::mem::transmute::<[i32; 8], __m256i>(i);
+    let x = _mm256_blend_ps::<0b0010_0100>(_mm256_blend_ps::<0b1001_0010>(a, b), c);
+    let y = _mm256_blend_ps::<0b0100_1001>(_mm256_blend_ps::<0b0010_0100>(a, b), c);
+    let z = _mm256_blend_ps::<0b1001_0010>(_mm256_blend_ps::<0b0100_1001>(a, b), c);
+    [
+        _mm256_permutevar8x32_ps(x, order([0, 3, 6, 1, 4, 7, 2, 5])),
+        _mm256_permutevar8x32_ps(y, order([1, 4, 7, 2, 5, 0, 3, 6])),
+        _mm256_permutevar8x32_ps(z, order([2, 5, 0, 3, 6, 1, 4, 7])),
+    ]
+}
+
+/// r, g, b and a registers as 8 rows of `[r, g, b, a]` (32 values): a 4×4 transpose within
+/// each 128-bit half, then the halves exchanged.
+#[inline(always)]
+unsafe fn store4_f32x8([r, g, b, a]: [__m256; 4], flat: &mut [MaybeUninit<f32>]) {
+    let flat = &mut flat[..32];
+    let (rg_lo, rg_hi) = (_mm256_unpacklo_ps(r, g), _mm256_unpackhi_ps(r, g));
+    let (ba_lo, ba_hi) = (_mm256_unpacklo_ps(b, a), _mm256_unpackhi_ps(b, a));
+    let (pd, ps) = (_mm256_castps_pd, _mm256_castpd_ps);
+    // Half j of row_k holds row 4j + k.
+    let row0 = ps(_mm256_unpacklo_pd(pd(rg_lo), pd(ba_lo)));
+    let row1 = ps(_mm256_unpackhi_pd(pd(rg_lo), pd(ba_lo)));
+    let row2 = ps(_mm256_unpacklo_pd(pd(rg_hi), pd(ba_hi)));
+    let row3 = ps(_mm256_unpackhi_pd(pd(rg_hi), pd(ba_hi)));
+    let p = flat.as_mut_ptr().cast::<f32>();
+    _mm256_storeu_ps(p, _mm256_permute2f128_ps::<0x20>(row0, row1));
+    _mm256_storeu_ps(p.add(8), _mm256_permute2f128_ps::<0x20>(row2, row3));
+    _mm256_storeu_ps(p.add(16), _mm256_permute2f128_ps::<0x31>(row0, row1));
+    _mm256_storeu_ps(p.add(24), _mm256_permute2f128_ps::<0x31>(row2, row3));
+}
 
 /// The permutation indices that gather component `k` of `W` rows of 3 from three registers of
 /// `W`: from the first two (the first 2W values), then from that result and the third.
