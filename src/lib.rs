@@ -44,7 +44,7 @@ pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
 pub use render::{render, Mesh, RenderOptions, Shading};
 pub use scene::{Scene, Specular};
-pub use shade::{describe, shade, VertexColors};
+pub use shade::{describe, shade, shade_uninit, VertexColors};
 
 #[cfg(feature = "python")]
 mod python;
