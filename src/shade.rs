@@ -99,7 +99,12 @@ impl<T: Real> Task<'_, '_, T> {
                 V3::zero()
             },
             normals: rows(inputs.normals, first, valid),
-            colors: inputs.colors.map(|c| color_rows(c, first, valid)),
+            // Not `Option::map`: a closure might stay out of line, without the target features.
+            #[allow(clippy::manual_map)]
+            colors: match inputs.colors {
+                Some(c) => Some(color_rows(c, first, valid)),
+                None => None,
+            },
         }
     }
 }
