@@ -14,11 +14,14 @@
 //! the binding's new numpy arrays).
 #![allow(unsafe_code)]
 
+use std::cell::Cell;
+use std::marker::PhantomData;
 use std::sync::OnceLock;
 
 #[cfg(target_arch = "x86_64")]
 use crate::lanes::x86;
 use crate::lanes::{Lanes, Pair};
+use crate::real::Real;
 
 /// Four registers as one block: four independent chains of instructions for the CPU to
 /// overlap, since the polynomials of `exp` and `ln` are long chains of dependent operations
@@ -152,16 +155,21 @@ impl Isa {
         })
     }
 
-    /// The lanes per block of `T` at this level: four registers of 64 bytes with AVX-512, 32
-    /// with AVX2, 16 with SSE2 (other targets: 32 bytes).
-    pub fn lanes<T>(self) -> usize {
-        let bytes = match self {
-            Isa::Avx512 => 4 * 64,
-            Isa::Avx2 => 4 * 32,
-            Isa::Baseline if cfg!(target_arch = "x86_64") => 4 * 16,
-            Isa::Baseline => 32,
-        };
-        bytes / std::mem::size_of::<T>()
+    /// The lanes per block of `T` at this level: those of its register type, asked of it.
+    ///
+    /// # Panics
+    /// As [`Isa::run`].
+    pub fn lanes<T: Real>(self) -> usize {
+        struct Count<'a, T>(&'a Cell<usize>, PhantomData<T>);
+        impl<T: Real> LaneWork for Count<'_, T> {
+            #[inline(always)]
+            fn run<S: InstructionSet>(self) {
+                self.0.set(<T::Vector<S> as Lanes>::N);
+            }
+        }
+        let lanes = Cell::new(0);
+        self.run(Count::<T>(&lanes, PhantomData));
+        lanes.get()
     }
 
     /// Runs `work` with the registers of this level.

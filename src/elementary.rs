@@ -19,31 +19,23 @@ const MAGIC_F32: f32 = 12_582_912.0;
 /// 1.5 · 2^52, the same for `f64`.
 const MAGIC_F64: f64 = 6_755_399_441_055_744.0;
 
-/// 2^k for integers `k` in [−126, 127], given as the two's complement bits of `k`.
+/// 2^k for an integer `k` in the normal exponent range, given as the two's complement bits of
+/// `k`: the biased exponent shifted into place.
 #[inline(always)]
-fn pow2_f32<V: Lanes<T = f32>>(k: V::Bits) -> V {
-    V::from_bits((k + V::Bits::splat(127)).shl(23))
+fn pow2<V: Lanes>(k: V::Bits) -> V {
+    let bias = V::Bits::splat(V::T::EXPONENT_BIAS);
+    V::from_bits((k + bias).shl(V::T::MANTISSA_BITS))
 }
 
-/// 2^k for integers `k` in [−1022, 1023], given as the two's complement bits of `k`.
+/// `p · 2^k` for the bits of an integer `k`, in two exact steps of ⌊k/2⌋ and the rest, so k
+/// from below the normal range (−150 in `f32`, −1075 in `f64`) to one past it needs no special
+/// case. ⌊k/2⌋ is a logical shift of k biased by twice the exponent range (no instruction set
+/// here has a 64-bit arithmetic shift).
 #[inline(always)]
-fn pow2_f64<V: Lanes<T = f64>>(k: V::Bits) -> V {
-    V::from_bits((k + V::Bits::splat(1023)).shl(52))
-}
-
-/// ⌊k/2⌋ for the two's complement bits of an integer k ≥ −`bias`, `bias` a power of two: a
-/// logical shift of the biased k (no instruction set here has a 64-bit arithmetic shift).
-#[inline(always)]
-fn half<B: LaneBits>(k: B, bias: u64) -> B {
-    (k + B::splat(bias)).shr(1) - B::splat(bias / 2)
-}
-
-/// `p · 2^k` for the bits of an integer `k` the caller keeps within two steps of the exponent
-/// range, so k from −150 to 128 (`f32`) needs no special case.
-#[inline(always)]
-fn scale_f32<V: Lanes<T = f32>>(p: V, k: V::Bits) -> V {
-    let h = half(k, 256);
-    p * pow2_f32::<V>(h) * pow2_f32::<V>(k - h)
+fn scale<V: Lanes>(p: V, k: V::Bits) -> V {
+    let bias = 2 * (V::T::EXPONENT_BIAS + 1);
+    let half = (k + V::Bits::splat(bias)).shr(1) - V::Bits::splat(bias / 2);
+    p * pow2::<V>(half) * pow2::<V>(k - half)
 }
 
 /// `e^x` in `f32`, within 2 ulp for results in the normal range; 0 below −103.97 (the result
@@ -77,7 +69,7 @@ pub fn exp_f32<V: Lanes<T = f32>>(x: V) -> V {
         c(P[1]) + c(P[0]) * r,
     );
     let p = (a0 + r2 * (a1 + r2 * a2)) * r2 + r + c(1.0);
-    let y = scale_f32(p, k);
+    let y = scale(p, k);
     V::select(
         x.lt(c(LO)),
         c(0.0),
@@ -113,9 +105,7 @@ pub fn exp_f64<V: Lanes<T = f64>>(x: V) -> V {
     let poly = c(P[0]) + r2 * (c(P[1]) + r2 * (c(P[2]) + r2 * (c(P[3]) + r2 * c(P[4]))));
     let cr = r - r2 * poly;
     let p = c(1.0) - ((lo - (r * cr) / (c(2.0) - cr)) - hi);
-    // 2^k in two exact steps, so k from −1075 to 1024 needs no special case.
-    let h = half(k, 2048);
-    let y = p * pow2_f64::<V>(h) * pow2_f64::<V>(k - h);
+    let y = scale(p, k);
     V::select(
         x.lt(c(LO)),
         c(0.0),

@@ -329,26 +329,18 @@ impl<T: Real> Kernel<'_, T> {
         }
         match self.prepared.specular {
             Specular::Blinn => {
-                let h = match light.source {
-                    Source::Directional {
-                        halfway: Some(h), ..
-                    } => {
-                        let power = cos_pow(
-                            side.unit.dot(V3::splat(h)),
-                            side.unit,
-                            V3::splat(h),
-                            s,
-                            &side.scale,
-                        );
-                        // A constant ĥ is zero in every lane or in none.
-                        return if h == [T::ZERO; 3] {
-                            V::splat(T::ZERO)
-                        } else {
-                            power
-                        };
+                if let Source::Directional {
+                    halfway: Some(h), ..
+                } = light.source
+                {
+                    // A constant ĥ is zero in every lane or in none.
+                    if h == [T::ZERO; 3] {
+                        return V::splat(T::ZERO);
                     }
-                    _ => normalize_or_zero_fast(vp + view),
-                };
+                    let h = V3::splat(h);
+                    return cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
+                }
+                let h = normalize_or_zero_fast(vp + view);
                 let power = cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
                 power.or_zero(!h.is_zero())
             }
@@ -479,7 +471,7 @@ impl<T: Real> Kernel<'_, T> {
                 narrow(total[2], error[2]),
             ]
         };
-        let ambient = if self.plan.ambient {
+        let ambient = if self.plan.ambient() {
             sat3(sums[0])
         } else {
             sums[0]
@@ -563,7 +555,7 @@ impl<T: Real> Kernel<'_, T> {
         // Without an ambient term the sum is +0, and a·(+0) could only change the sign of a
         // zero, which the final clamp makes +0 anyway: the same bits without it.
         let base = e + a.mul_elements(global);
-        let base = if plan.ambient {
+        let base = if plan.ambient() {
             base + a.mul_elements(ambient)
         } else {
             base

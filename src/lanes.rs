@@ -36,11 +36,6 @@ pub trait LaneMask:
     fn bitmask(self) -> u64;
     /// True when every lane is set.
     fn all(self) -> bool;
-    /// True when some lane is set.
-    #[inline(always)]
-    fn any(self) -> bool {
-        self.bitmask() != 0
-    }
 }
 
 /// The bits of a [`Lanes`] as unsigned integers of the same width (u32 for `f32`, u64 for
@@ -288,16 +283,6 @@ impl<V: Lanes> V3<V> {
             x: self.x * o.x,
             y: self.y * o.y,
             z: self.z * o.z,
-        }
-    }
-
-    /// `a` where `mask` is set, else `b`.
-    #[inline(always)]
-    pub fn select(mask: V::Mask, a: Self, b: Self) -> Self {
-        Self {
-            x: V::select(mask, a.x, b.x),
-            y: V::select(mask, a.y, b.y),
-            z: V::select(mask, a.z, b.z),
         }
     }
 

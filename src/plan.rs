@@ -69,8 +69,6 @@ pub struct Plan {
     pub normal_length: bool,
     /// The vertex-to-eye direction VP_e is computed per vertex (local viewer and a specular term).
     pub view: bool,
-    /// Some light has an ambient term: the sum Σ w·a_cli is formed at all.
-    pub ambient: bool,
 }
 
 impl Plan {
@@ -128,10 +126,14 @@ impl Plan {
             unit_normal: prepared.normalize || power,
             normal_length: !prepared.normalize && power && prepared.specular == Specular::Blinn,
             view: local && power,
-            ambient: lights.iter().any(|light| light.ambient),
             lights,
             sides,
         }
+    }
+
+    /// Some light has an ambient term: the sum Σ w·a_cli is formed at all.
+    pub fn ambient(&self) -> bool {
+        self.lights.iter().any(|light| light.ambient)
     }
 
     /// Every term of every light, whether the scene needs it or not: the reference the
@@ -158,7 +160,6 @@ impl Plan {
             unit_normal: true,
             normal_length: !prepared.normalize,
             view: matches!(prepared.viewer, Viewer::Local(_)),
-            ambient: true,
         }
     }
 }

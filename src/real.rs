@@ -98,6 +98,10 @@ pub trait Real:
     const MIN_POSITIVE: Self;
     /// Not a number.
     const NAN: Self;
+    /// The exponent bias of the IEEE format, 127 or 1023.
+    const EXPONENT_BIAS: u64;
+    /// The explicit significand bits of the IEEE format, 23 or 52.
+    const MANTISSA_BITS: u32;
     /// +∞.
     const INFINITY: Self;
     /// An exact power of two that lifts any nonzero subnormal-length vector into the normal range
@@ -176,6 +180,8 @@ impl Real for f32 {
     const EPSILON: Self = f32::EPSILON;
     const MIN_POSITIVE: Self = f32::MIN_POSITIVE;
     const NAN: Self = f32::NAN;
+    const EXPONENT_BIAS: u64 = 127;
+    const MANTISSA_BITS: u32 = f32::MANTISSA_DIGITS - 1;
     const INFINITY: Self = f32::INFINITY;
     // 2^-149 · 2^100 = 2^-49 (its square is normal); 2^128 · 2^-100 = 2^28 (its square is finite).
     const UPSCALE: Self = f32::from_bits((127 + 100) << 23);
@@ -217,6 +223,8 @@ impl Real for f64 {
     const EPSILON: Self = f64::EPSILON;
     const MIN_POSITIVE: Self = f64::MIN_POSITIVE;
     const NAN: Self = f64::NAN;
+    const EXPONENT_BIAS: u64 = 1023;
+    const MANTISSA_BITS: u32 = f64::MANTISSA_DIGITS - 1;
     const INFINITY: Self = f64::INFINITY;
     // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).
     const UPSCALE: Self = f64::from_bits((1023 + 600) << 52);

@@ -3,7 +3,7 @@
 
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
-use super::{LaneBits, LaneMask, Lanes, V3};
+use super::{LaneBits, LaneMask, Lanes};
 
 /// `N` values of `T`, one per vertex.
 #[must_use]
@@ -195,16 +195,5 @@ impl<T: Copy + Neg<Output = T> + Default, const N: usize> Neg for Pack<T, N> {
     #[inline(always)]
     fn neg(self) -> Self {
         Self(build(|i| -self.0[i]))
-    }
-}
-
-impl<T, const N: usize> V3<Pack<T, N>>
-where
-    Pack<T, N>: Lanes<T = T>,
-{
-    /// `N` rows `[x, y, z]`, one per lane.
-    #[inline(always)]
-    pub fn from_rows(rows: &[[T; 3]; N]) -> Self {
-        <Pack<T, N> as Lanes>::load_rows3(rows)
     }
 }
