@@ -125,14 +125,9 @@ impl Isa {
         match self {
             Isa::Baseline => true,
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => is_x86_feature_detected!("avx2"),
+            Isa::Avx2 => avx2_detected(),
             #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => {
-                is_x86_feature_detected!("avx512f")
-                    && is_x86_feature_detected!("avx512bw")
-                    && is_x86_feature_detected!("avx512dq")
-                    && is_x86_feature_detected!("avx512vl")
-            }
+            Isa::Avx512 => avx512_detected(),
             #[cfg(not(target_arch = "x86_64"))]
             _ => false,
         }
@@ -189,15 +184,40 @@ impl Isa {
     }
 }
 
-// SAFETY (for both): only called from `Isa::run`, after `Isa::supported` confirmed the features.
+/// Defines, from one list of target features, the function that runs a [`LaneWork`] compiled
+/// with them and the check that this CPU has every one of them: a feature enabled but not
+/// checked would let the compiler emit an instruction the CPU may lack.
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx512f,avx512bw,avx512dq,avx512vl,avx2,avx,fma,bmi1,bmi2,lzcnt")]
-fn avx512<W: LaneWork>(work: W) {
-    work.run::<Avx512>();
+macro_rules! feature_set {
+    ($run:ident, $detected:ident, $set:ty, [$($feature:tt),+ $(,)?]) => {
+        /// True when the CPU has every feature the function below is compiled with.
+        fn $detected() -> bool {
+            $(is_x86_feature_detected!($feature))&&+
+        }
+
+        // SAFETY: only called from `Isa::run`, after `Isa::supported` confirmed the features.
+        $(#[target_feature(enable = $feature)])+
+        fn $run<W: LaneWork>(work: W) {
+            work.run::<$set>();
+        }
+    };
 }
 
 #[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2,avx,fma,bmi1,bmi2,lzcnt")]
-fn avx2<W: LaneWork>(work: W) {
-    work.run::<Avx2>();
-}
+feature_set!(
+    avx512,
+    avx512_detected,
+    Avx512,
+    [
+        "avx512f", "avx512bw", "avx512dq", "avx512vl", "avx2", "avx", "fma", "bmi1", "bmi2",
+        "lzcnt"
+    ]
+);
+
+#[cfg(target_arch = "x86_64")]
+feature_set!(
+    avx2,
+    avx2_detected,
+    Avx2,
+    ["avx2", "avx", "fma", "bmi1", "bmi2", "lzcnt"]
+);
