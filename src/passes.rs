@@ -181,7 +181,9 @@ impl<T: Real> Pass<'_, T> {
             let face = mesh.faces[t.face as usize];
             let weights = t.weights_at(x, y);
             fragment(self.scene, t.front, |plane| {
+                // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
                 interpolate(&rows[plane * n..(plane + 1) * n], face, weights)
+                    .map(|c| c.clamp(0.0, 1.0))
             })
         });
         Ok(())

@@ -357,6 +357,53 @@ mod tests {
     }
 
     #[test]
+    fn gouraud_colours_stay_in_the_unit_interval() {
+        // White vertices: the interpolation weights of a pixel may sum to 1 + ulp.
+        let scene = Scene {
+            material: Material {
+                emission: [1.0; 4],
+                ..Material::default()
+            },
+            ..emission_scene()
+        };
+        let vertices: Vec<[f64; 3]> = (0..60)
+            .map(|i| {
+                let t = f64::from(i) * 0.731;
+                [0.9 * t.sin(), 0.8 * t.cos(), 0.3 * (t * 1.7).sin()]
+            })
+            .collect();
+        let faces: Vec<[i64; 3]> = (0..58).map(|i| [i, i + 1, i + 2]).collect();
+        let mesh = Mesh {
+            vertices: &vertices,
+            faces: &faces,
+            normals: None,
+            colors: None,
+        };
+        let options = RenderOptions {
+            viewport: Viewport {
+                width: 97,
+                height: 89,
+            },
+            shading: Shading::Gouraud,
+            ..RenderOptions::default()
+        };
+        let (width, height) = (97, 89);
+        let mut image = vec![0.0; width * height * 4];
+        let mut depth = vec![0.0; width * height];
+        render(
+            &scene,
+            &mesh,
+            &Camera::default(),
+            &options,
+            &mut image,
+            &mut depth,
+        )
+        .unwrap();
+        assert!(depth.iter().any(|&z| z < 1.0));
+        assert!(image.iter().all(|&c| (0.0..=1.0).contains(&c)));
+    }
+
+    #[test]
     fn results_do_not_depend_on_the_thread_count() {
         // A fan of thin triangles through the near and far planes and past the guard band.
         let vertices: Vec<[f64; 3]> = (0..200)
