@@ -65,11 +65,14 @@ pub fn check_affine(m: &DMat4, name: &str) -> Result<(), Error> {
             "{name} must be affine (last row (0, 0, 0, 1)), got last row {last_row}"
         )));
     }
-    let determinant = glam::DMat3::from_mat4(*m).determinant();
-    if determinant == 0.0 || !determinant.is_finite() {
+    // Inverted at a power-of-two scale: the determinant itself under- or overflows for
+    // entries beyond about 1e±100, which says nothing about invertibility.
+    let m3 = glam::DMat3::from_mat4(*m);
+    if crate::prepare::scaled_inverse(&m3).is_none() {
         return Err(Error::value(format!(
             "{name} must be invertible (normals go through its inverse transpose), got \
-             determinant {determinant} for the upper-left 3x3"
+             determinant {} for the upper-left 3x3",
+            m3.determinant()
         )));
     }
     Ok(())

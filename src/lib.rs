@@ -24,6 +24,8 @@ pub mod plan;
 pub mod prepare;
 #[cfg(test)]
 mod property_tests;
+#[cfg(test)]
+mod range_tests;
 pub mod raster;
 pub mod real;
 pub mod render;

@@ -2,14 +2,14 @@
 //! vertex, done once in `f64` and rounded once to the kernel's type (Mesa's `_mesa_update_material`
 //! and `compute_light_positions` do the same per state change).
 
-use glam::{DMat4, DVec3};
+use glam::{DMat3, DMat4, DVec3};
 
 use crate::dispatch::Scalar;
 use crate::error::Error;
 use crate::lanes::{Lanes, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::real::{normalize_or_zero, Real};
+use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular};
 
 /// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
@@ -147,11 +147,41 @@ impl<T: Real> Transform<T> {
     }
 
     /// The transform of an affine `modelview` (last row (0, 0, 0, 1)); with `rescale_normal`,
-    /// the normal matrix is scaled by GL's 1/|third row of M⁻¹| (§2.11.3).
+    /// the normal matrix is scaled by GL's 1/|third row of M⁻¹| (§2.11.3). The normal matrix is
+    /// the true inverse transpose (see [`Transform::for_shading`] without `normalize`), and the
+    /// positions are checked as if read.
     ///
     /// # Errors
-    /// A value error for a non-finite, projective or singular `modelview`.
+    /// As [`Transform::for_shading`].
     pub fn new(modelview: &DMat4, rescale_normal: bool) -> Result<Self, Error> {
+        Self::for_shading(modelview, rescale_normal, false, true)
+    }
+
+    /// The transform of an affine `modelview` for a call with `GL_RESCALE_NORMAL`
+    /// (`rescale_normal`) and `GL_NORMALIZE` (`normalize`) that reads positions or not
+    /// (`positions`).
+    ///
+    /// The inverse is taken of the upper 3x3 scaled by an exact power of two (its largest entry
+    /// in [1, 2)), so any uniform scale of the modelview that keeps it finite leaves the
+    /// rescaled or normalised normals unchanged to rounding. With `rescale_normal` the scale
+    /// cancels; with `normalize` alone the normal matrix is that well-scaled inverse transpose
+    /// (any positive multiple gives the same unit normals); with neither it is the true
+    /// (M⁻¹)ᵀ, whose entries saturate at ±`T::MAX` where they exceed `T`'s range (a non-unit
+    /// normal scales the lighting, as in GL).
+    ///
+    /// Positions go through the modelview rounded to `T`: entries below `T`'s normal range
+    /// round to subnormals or 0 like any value of `T` (use `f64` for such modelviews).
+    ///
+    /// # Errors
+    /// A value error for a non-finite, projective or singular `modelview`, and, when
+    /// `positions` are read, for an entry of its linear part or translation beyond `T`'s
+    /// range (positions would overflow). Without positions such entries are never read.
+    pub fn for_shading(
+        modelview: &DMat4,
+        rescale_normal: bool,
+        normalize: bool,
+        positions: bool,
+    ) -> Result<Self, Error> {
         if !modelview.is_finite() {
             return Err(Error::value(format!(
                 "modelview must be finite, got {modelview}"
@@ -164,26 +194,109 @@ impl<T: Real> Transform<T> {
             )));
         }
         let m3 = glam::DMat3::from_mat4(*modelview);
-        let inverse = m3.inverse();
-        if m3.determinant() == 0.0 || !inverse.is_finite() {
+        let Some((inverse, e)) = scaled_inverse(&m3) else {
             return Err(Error::value(format!(
                 "modelview must be invertible (its normal matrix is the inverse transpose), \
                  got determinant {} for the upper-left 3x3",
                 m3.determinant()
             )));
-        }
-        let scale = if rescale_normal {
-            1.0 / inverse.row(2).length()
-        } else {
-            1.0
         };
-        let normal = inverse.transpose() * scale;
+        // M = A·D with D = diag(2^e), so (M⁻¹)ᵀ = A⁻ᵀ·D⁻¹: column j of A⁻ᵀ times 2^−e_j, and
+        // any factor common to the three columns cancels in the rescaled or normalised normal.
+        let columns = |shift: [i32; 3], factor: f64| {
+            let t = inverse.transpose();
+            DMat3::from_cols(
+                (t.x_axis * factor).map(|x| ldexp(x, shift[0])),
+                (t.y_axis * factor).map(|x| ldexp(x, shift[1])),
+                (t.z_axis * factor).map(|x| ldexp(x, shift[2])),
+            )
+        };
+        let normal = if rescale_normal {
+            // GL's factor 1/|row 2 of M⁻¹| = 2^e_2/|row 2 of A⁻¹|.
+            let (_, length) = normalize_and_length::<f64>(inverse.row(2));
+            columns(e.map(|ej| e[2] - ej), 1.0 / length)
+        } else if normalize {
+            let least = e.iter().copied().min().unwrap_or(0);
+            let n = columns(e.map(|ej| least - ej), 1.0);
+            let top = n
+                .to_cols_array()
+                .iter()
+                .fold(0.0_f64, |m, x| m.max(x.abs()));
+            columns(e.map(|ej| least - ej - exponent(top)), 1.0)
+        } else {
+            columns(e.map(|ej| -ej), 1.0)
+        };
+        let linear = [m3.x_axis, m3.y_axis, m3.z_axis].map(cast_saturating::<T>);
+        let translation = cast_saturating::<T>(modelview.w_axis.truncate());
+        let top = [m3.x_axis, m3.y_axis, m3.z_axis, modelview.w_axis.truncate()]
+            .iter()
+            .fold(0.0_f64, |m, v| m.max(v.abs().max_element()));
+        if positions && top > T::MAX.to_f64() {
+            return Err(Error::value(format!(
+                "modelview entries must be within float{bits}'s range (|m| <= {max:.1e}) for \
+                 float{bits} arithmetic, got max |m| = {top:e}; use float64 input or \
+                 accuracy='exact'",
+                bits = 8 * std::mem::size_of::<T>(),
+                max = T::MAX.to_f64(),
+            )));
+        }
         Ok(Self {
-            linear: [m3.x_axis, m3.y_axis, m3.z_axis].map(cast::<T>),
-            translation: cast::<T>(modelview.w_axis.truncate()),
-            normal: [normal.x_axis, normal.y_axis, normal.z_axis].map(cast::<T>),
+            linear,
+            translation,
+            normal: [normal.x_axis, normal.y_axis, normal.z_axis].map(cast_saturating::<T>),
         })
     }
+}
+
+/// ⌊log2 |x|⌋ for finite nonzero `x` (subnormals included), from the bits; 0 for 0.
+fn exponent(x: f64) -> i32 {
+    if x == 0.0 {
+        return 0;
+    }
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        // Subnormal: lift by 2^64 (exact) and read the exponent there.
+        return exponent(x * 2f64.powi(64)) - 64;
+    }
+    biased - 1023
+}
+
+/// `x · 2^k`, in steps that stay within `f64`'s exponent range (2^k itself may not be one:
+/// k up to ±2044); exact unless the result is subnormal (then rounded) or beyond the range (±inf).
+fn ldexp(x: f64, k: i32) -> f64 {
+    // k in [−1022, 1023]: a biased exponent in [1, 2046], so 2^k is a normal f64.
+    let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
+    let half = k / 2;
+    step(
+        step(x, half.clamp(-1022, 1023)),
+        (k - half).clamp(-1022, 1023),
+    )
+}
+
+/// A⁻¹ and e for M = A·diag(2^e), where e_j = ⌊log2 max_i |m_ij|⌋ scales column j of A to
+/// a largest entry in [1, 2) (exactly), so the inverse of M at any scale, uniform or column by
+/// column, is formed from the same A; `None` when M is singular: a zero column, a zero
+/// determinant of A, or an inverse that is not finite.
+pub(crate) fn scaled_inverse(m: &DMat3) -> Option<(DMat3, [i32; 3])> {
+    let columns = [m.x_axis, m.y_axis, m.z_axis];
+    let top = columns.map(|c| c.abs().max_element());
+    if !top.iter().all(|t| *t > 0.0 && t.is_finite()) {
+        return None;
+    }
+    let e = top.map(exponent);
+    let a = DMat3::from_cols(
+        columns[0].map(|x| ldexp(x, -e[0])),
+        columns[1].map(|x| ldexp(x, -e[1])),
+        columns[2].map(|x| ldexp(x, -e[2])),
+    );
+    let inverse = a.inverse();
+    (a.determinant() != 0.0 && inverse.is_finite()).then_some((inverse, e))
+}
+
+/// Rounds an `f64` vector to the kernel's type, saturating at ±`T::MAX` (instead of ±inf).
+fn cast_saturating<T: Real>(v: DVec3) -> [T; 3] {
+    let max = T::MAX.to_f64();
+    v.to_array().map(|x| T::from_f64(x.clamp(-max, max)))
 }
 
 /// The arithmetic a `shade` call computes in.
@@ -274,6 +387,12 @@ fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<[T; 3], 
     }
 }
 
+/// True when a call on `scene` reads positions (a positional light or a local viewer), as
+/// [`crate::plan::Plan`] decides.
+fn reads_positions(scene: &Scene) -> bool {
+    scene.viewer[3] != 0.0 || scene.lights.iter().any(|l| !l.is_directional())
+}
+
 fn prepare_light<T: Real>(
     light: &Light,
     index: usize,
@@ -354,7 +473,14 @@ impl<T: Real> Prepared<T> {
         let transform = options
             .modelview
             .as_ref()
-            .map(|m| Transform::new(m, options.rescale_normal))
+            .map(|m| {
+                Transform::for_shading(
+                    m,
+                    options.rescale_normal,
+                    options.normalize,
+                    reads_positions(scene),
+                )
+            })
             .transpose()?;
         Ok(Self {
             lights,
