@@ -28,6 +28,13 @@ fn rgba<T: Real>(c: [f64; 4]) -> [T; 4] {
     [r, g, b, T::from_f64(c[3].clamp(-sat, sat))]
 }
 
+/// A nonnegative exponent or attenuation coefficient rounded to `T`, saturated at `T::MAX`:
+/// beyond it `x^s` is 0 or 1 and `1/k` is 0 alike, and ±inf would meet a 0 (1^inf, inf·0).
+#[inline]
+fn saturate<T: Real>(x: f64) -> T {
+    T::from_f64(x.min(T::MAX.to_f64()))
+}
+
 /// Rounds an `f64` vector to the kernel's type.
 fn cast<T: Real>(v: DVec3) -> [T; 3] {
     v.to_array().map(T::from_f64)
@@ -112,7 +119,7 @@ impl<T: Real> SideMaterial<T> {
             diffuse: rgba(m.diffuse),
             specular: rgba(m.specular),
             emission: rgba(m.emission),
-            shininess: T::from_f64(m.shininess),
+            shininess: saturate(m.shininess),
         }
     }
 }
@@ -381,8 +388,11 @@ fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<[T; 3], 
         Ok(point)
     } else {
         Err(Error::value(format!(
-            "{} must lie within the range of the input dtype, got {h:?}",
-            what()
+            "{} must lie within float{bits}'s range (|(x, y, z)/w| <= {max:.1e}) for \
+             float{bits} arithmetic, got {h:?}; use float64 input or accuracy='exact'",
+            what(),
+            bits = 8 * std::mem::size_of::<T>(),
+            max = T::MAX.to_f64(),
         )))
     }
 }
@@ -409,7 +419,7 @@ fn prepare_light<T: Real>(
         } else {
             light.spot_cutoff.to_radians().cos()
         }),
-        exponent: T::from_f64(light.spot_exponent),
+        exponent: saturate(light.spot_exponent),
     });
     let source = if light.is_directional() {
         let vp = normalize_or_zero::<f64>(DVec3::new(x, y, z));
@@ -430,7 +440,7 @@ fn prepare_light<T: Real>(
             light.linear_attenuation,
             light.quadratic_attenuation,
         ]
-        .map(T::from_f64);
+        .map(saturate);
         Source::Positional {
             position,
             attenuation,

@@ -186,3 +186,136 @@ fn float32_rejects_modelview_entries_it_would_overflow_in_positions() {
     .unwrap();
     assert!(in_unit_interval(&out));
 }
+
+/// A positional spot light straight above the vertex, with a specular material: every
+/// parameter of eqs. 2.2–2.5 is in use.
+fn spot_scene() -> Scene {
+    Scene {
+        lights: vec![Light {
+            position: [0.0, 0.0, 2.0, 1.0],
+            spot_direction: [0.0, 0.0, -1.0],
+            spot_cutoff: 30.0,
+            spot_exponent: 2.0,
+            linear_attenuation: 0.5,
+            ..Light::default()
+        }],
+        material: crate::material::Material {
+            specular: [1.0; 4],
+            shininess: 10.0,
+            ..crate::material::Material::default()
+        },
+        viewer: [0.0, 0.0, 3.0, 1.0],
+        ..Scene::default()
+    }
+}
+
+/// Every scalar parameter of `spot_scene` set to `huge` in turn, lit at the vertex under the
+/// light (cosines exactly 1, distance 2) and beside it (cosines below 1), with and without a
+/// light at the vertex.
+fn huge_parameters_light_finitely<T: Real>(huge: f64) {
+    type Edit = fn(&mut Scene, f64);
+    let edits: [(&str, Edit); 6] = [
+        ("shininess", |s, x| s.material.shininess = x),
+        ("spot_exponent", |s, x| s.lights[0].spot_exponent = x),
+        ("constant_attenuation", |s, x| {
+            s.lights[0].constant_attenuation = x;
+        }),
+        ("linear_attenuation", |s, x| {
+            s.lights[0].linear_attenuation = x;
+        }),
+        ("quadratic_attenuation", |s, x| {
+            s.lights[0].quadratic_attenuation = x;
+        }),
+        ("constant_attenuation = 0, quadratic", |s, x| {
+            s.lights[0].constant_attenuation = 0.0;
+            s.lights[0].quadratic_attenuation = x;
+        }),
+    ];
+    let vertices = [[0.0, 0.0, 0.0], [0.3, 0.1, 0.0], [0.0, 0.0, 2.0]];
+    for (name, edit) in edits {
+        let mut scene = spot_scene();
+        edit(&mut scene, huge);
+        for p in vertices {
+            for n in [[0.0, 0.0, 1.0], [0.1, 0.0, 0.9]] {
+                let out = shade_one::<T>(
+                    &scene,
+                    p.map(T::from_f64),
+                    n.map(T::from_f64),
+                    &ShadeOptions::default(),
+                )
+                .unwrap();
+                assert!(
+                    in_unit_interval(&out),
+                    "{name} = {huge:e} at {p:?}, {n:?}: {out:?}"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn huge_parameters_light_finitely_f32() {
+    huge_parameters_light_finitely::<f32>(1e39);
+    huge_parameters_light_finitely::<f32>(f64::MAX);
+    // Saturated at f32::MAX, a huge exponent gives what f64 gives: 1^s = 1, x^s = 0 for x < 1.
+    for n in [[0.0, 0.0, 1.0], [0.1, 0.0, 0.9]] {
+        let mut scene = spot_scene();
+        scene.material.shininess = 1e39;
+        scene.lights[0].spot_exponent = 1e39;
+        let wide = shade_one::<f64>(&scene, [0.0; 3], n, &ShadeOptions::default()).unwrap();
+        let narrow = shade_one::<f32>(
+            &scene,
+            [0.0; 3],
+            n.map(|x| x as f32),
+            &ShadeOptions::default(),
+        )
+        .unwrap();
+        for (a, b) in wide.iter().zip(&narrow) {
+            assert!((a - b).abs() < 1e-6, "{wide:?} vs {narrow:?}");
+        }
+    }
+}
+
+#[test]
+fn points_beyond_float32_are_rejected_by_name_directions_are_not() {
+    let mut scene = spot_scene();
+    scene.lights[0].position = [1e39, 0.0, 0.0, 1.0];
+    let err =
+        shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default()).unwrap_err();
+    assert!(
+        err.message
+            .starts_with("position of light 0 must lie within float32's range"),
+        "{}",
+        err.message
+    );
+    let wide = shade_one::<f64>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default());
+    assert!(in_unit_interval(&wide.unwrap()));
+    let mut scene = spot_scene();
+    scene.viewer = [0.0, 1e39, 0.0, 1.0];
+    let err =
+        shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default()).unwrap_err();
+    assert!(
+        err.message.starts_with("viewer must lie within"),
+        "{}",
+        err.message
+    );
+    // Directions are normalised in f64: any finite length is fine.
+    let mut scene = spot_scene();
+    scene.lights[0].spot_direction = [0.0, 0.0, -1e300];
+    scene.lights.push(Light {
+        position: [1e300, 0.0, 1e300, 0.0],
+        ..Light::default()
+    });
+    scene.viewer = [0.0, 1e300, 1e300, 0.0];
+    for huge_point in [[0.0, 0.0, 3e38, 1.0], [3e38, 3e38, 3e38, 1.0]] {
+        scene.lights[0].position = huge_point;
+        let out = shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default());
+        assert!(in_unit_interval(&out.unwrap()), "{huge_point:?}");
+    }
+}
+
+#[test]
+fn huge_parameters_light_finitely_f64() {
+    huge_parameters_light_finitely::<f64>(1e300);
+    huge_parameters_light_finitely::<f64>(f64::MAX);
+}
