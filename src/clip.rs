@@ -12,6 +12,8 @@
 
 use glam::{DVec3, DVec4};
 
+use crate::real::{exponent, ldexp};
+
 /// The guard band, in units of w (normalised device coordinates): side planes at ±4 keep
 /// window coordinates within 2.5 viewports of the origin.
 pub const GUARD_BAND: f64 = 4.0;
@@ -59,29 +61,109 @@ fn outcode(clip: DVec4) -> u8 {
         .fold(0, |code, (k, p)| code | (u8::from(p.dot(clip) < 0.0) << k))
 }
 
+/// (s, e) with s + e = a + b exactly (Knuth's TwoSum).
+#[inline]
+fn two_sum(a: f64, b: f64) -> (f64, f64) {
+    let s = a + b;
+    let bb = s - a;
+    (s, (a - (s - bb)) + (b - bb))
+}
+
+/// Σ `terms`, computed exactly as a nonoverlapping expansion (Shewchuk's Grow-Expansion) and
+/// rounded from its smallest component up: within an ulp or two of the exact sum, however
+/// much the terms cancel.
+fn exact_sum<const N: usize>(terms: [f64; N]) -> f64 {
+    let mut expansion = [0.0; N];
+    for (n, &term) in terms.iter().enumerate() {
+        let mut q = term;
+        for e in &mut expansion[..n] {
+            let (sum, error) = two_sum(q, *e);
+            (q, *e) = (sum, error);
+        }
+        expansion[n] = q;
+    }
+    expansion.iter().fold(0.0, |sum, &e| sum + e)
+}
+
+/// The signed distance `plane · v` as an exact pair (hi, lo): the planes' coefficients are 0,
+/// ±1 and 4, so it is the sum of two exact products.
+fn distance(plane: DVec4, v: DVec4) -> (f64, f64) {
+    let (axis, w) = if plane.x != 0.0 {
+        (plane.x * v.x, plane.w * v.w)
+    } else if plane.y != 0.0 {
+        (plane.y * v.y, plane.w * v.w)
+    } else {
+        (plane.z * v.z, plane.w * v.w)
+    };
+    two_sum(axis, w)
+}
+
 /// The point where the edge from `inside` to `outside` crosses `plane`; always computed from
 /// the inside end, so the two triangles sharing an edge cut it at the same point.
+///
+/// Each coordinate is (d_in·out − d_out·in)/(d_in − d_out), with the distances, the products
+/// and their sums exact before the one division: of a huge triangle (coordinates up to 2^60
+/// times the guard band, say), the cut points near the view would otherwise be lost to
+/// cancellation (in + (out − in)·t has an error of an ulp of the huge coordinates).
 fn crossing(plane: DVec4, inside: ClipVertex, outside: ClipVertex) -> ClipVertex {
-    let (d_in, d_out) = (plane.dot(inside.clip), plane.dot(outside.clip));
-    let t = d_in / (d_in - d_out);
+    let (in_hi, in_lo) = distance(plane, inside.clip);
+    let (out_hi, out_lo) = distance(plane, outside.clip);
+    let denominator = exact_sum([in_hi, in_lo, -out_hi, -out_lo]);
+    let product = |a: f64, b: f64| {
+        let p = a * b;
+        [p, a.mul_add(b, -p)]
+    };
+    let coordinate = |a: f64, b: f64| {
+        let [p0, p1] = product(in_hi, b);
+        let [p2, p3] = product(in_lo, b);
+        let [p4, p5] = product(-out_hi, a);
+        let [p6, p7] = product(-out_lo, a);
+        exact_sum([p0, p1, p2, p3, p4, p5, p6, p7]) / denominator
+    };
+    let (a, b) = (inside.clip, outside.clip);
+    let t = (in_hi + in_lo) / denominator;
     ClipVertex {
-        clip: inside.clip + (outside.clip - inside.clip) * t,
+        clip: DVec4::new(
+            coordinate(a.x, b.x),
+            coordinate(a.y, b.y),
+            coordinate(a.z, b.z),
+            coordinate(a.w, b.w),
+        ),
         weights: inside.weights + (outside.weights - inside.weights) * t,
+    }
+}
+
+/// `vertices` scaled by one power of two so that the largest |component| of their clip
+/// coordinates is in [1, 2): the projected polygon, its depths and its perspective-correct
+/// weights (ratios of clip coordinates) are unchanged, and no later product over- or
+/// underflows, whatever the triangle's size.
+fn rescale(vertices: &mut [ClipVertex]) {
+    let top = vertices
+        .iter()
+        .fold(0.0_f64, |m, v| m.max(v.clip.abs().max_element()));
+    if !(top > 0.0 && top.is_finite()) {
+        return;
+    }
+    let k = -exponent(top);
+    for v in vertices {
+        v.clip = v.clip.map(|x| ldexp(x, k));
     }
 }
 
 /// Clips the triangle with clip coordinates `corners` and calls `emit` with each triangle of
 /// what is left inside, a fan around the first vertex of the clipped polygon (the triangle
 /// itself when wholly inside; nothing when wholly outside or when a coordinate is not finite).
+/// The clip coordinates it passes are the triangle's times a power of two (see `rescale`).
 pub fn clip_triangle(corners: [DVec4; 3], mut emit: impl FnMut([ClipVertex; 3])) {
     if !corners.iter().all(|c| c.is_finite()) {
         return;
     }
     let weights = [DVec3::X, DVec3::Y, DVec3::Z];
-    let corners: [ClipVertex; 3] = std::array::from_fn(|i| ClipVertex {
+    let mut corners: [ClipVertex; 3] = std::array::from_fn(|i| ClipVertex {
         clip: corners[i],
         weights: weights[i],
     });
+    rescale(&mut corners);
     let codes = corners.map(|c| outcode(c.clip));
     if codes == [0; 3] {
         return emit(corners);
@@ -125,6 +207,8 @@ pub fn clip_triangle(corners: [DVec4; 3], mut emit: impl FnMut([ClipVertex; 3]))
         }
         polygon = next;
     }
+    let len = polygon.len;
+    rescale(&mut polygon.vertices[..len]);
     let v = polygon.vertices();
     for i in 1..v.len() - 1 {
         emit([v[0], v[i], v[i + 1]]);
@@ -204,8 +288,8 @@ mod tests {
         let v = clipped(corners);
         assert_eq!(v.len(), 4);
         for p in &v {
-            assert_eq!(p.clip.x.abs(), GUARD_BAND);
-            assert_eq!(p.clip.y.abs(), GUARD_BAND);
+            assert_eq!((p.clip / p.clip.w).x.abs(), GUARD_BAND);
+            assert_eq!((p.clip / p.clip.w).y.abs(), GUARD_BAND);
         }
         let corners = [
             DVec4::new(-100.0, -100.0, -2.0, 1.0),
@@ -218,6 +302,42 @@ mod tests {
             let c = p.clip;
             assert!(c.x.abs().max(c.y.abs()) <= GUARD_BAND * c.w + 1e-12);
             assert!(c.z.abs() <= c.w + 1e-12);
+        }
+    }
+
+    #[test]
+    fn huge_triangles_are_cut_where_the_small_ones_are() {
+        // Enclosing the guard band at any scale: cut to exactly its square, w kept near 1.
+        for k in [1, 17, 18, 100, 200, 300] {
+            let s = 10f64.powi(k);
+            let corners = [
+                DVec4::new(-3.0 * s, -3.0 * s, 0.0, 1.0),
+                DVec4::new(3.0 * s, -3.0 * s, 0.0, 1.0),
+                DVec4::new(0.0, 3.0 * s, 0.0, 1.0),
+            ];
+            let v = clipped(corners);
+            assert_eq!(v.len(), 4, "1e{k}");
+            for p in &v {
+                let ndc = p.clip / p.clip.w;
+                assert_eq!(
+                    (ndc.x.abs(), ndc.y.abs()),
+                    (GUARD_BAND, GUARD_BAND),
+                    "1e{k}"
+                );
+                assert!(p.clip.abs().max_element() >= 1.0 && p.clip.abs().max_element() < 2.0);
+            }
+            // An edge along y = x/2 through the view stays there.
+            let corners = [
+                DVec4::new(-s, -0.5 * s, 0.0, 1.0),
+                DVec4::new(s, 0.5 * s, 0.0, 1.0),
+                DVec4::new(s, -s, 0.0, 1.0),
+            ];
+            for p in clipped(corners) {
+                let ndc = p.clip / p.clip.w;
+                let on_edge = (ndc.y - 0.5 * ndc.x).abs() <= 1e-15;
+                let on_band = ndc.x.abs().max(ndc.y.abs()) == GUARD_BAND;
+                assert!(on_edge || on_band, "1e{k}: {ndc}");
+            }
         }
     }
 }

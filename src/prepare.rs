@@ -9,7 +9,7 @@ use crate::error::Error;
 use crate::lanes::{Lanes, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::real::{normalize_and_length, normalize_or_zero, Real};
+use crate::real::{exponent, ldexp, normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular};
 
 /// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
@@ -253,31 +253,6 @@ impl<T: Real> Transform<T> {
             normal: [normal.x_axis, normal.y_axis, normal.z_axis].map(cast_saturating::<T>),
         })
     }
-}
-
-/// ⌊log2 |x|⌋ for finite nonzero `x` (subnormals included), from the bits; 0 for 0.
-fn exponent(x: f64) -> i32 {
-    if x == 0.0 {
-        return 0;
-    }
-    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
-    if biased == 0 {
-        // Subnormal: lift by 2^64 (exact) and read the exponent there.
-        return exponent(x * 2f64.powi(64)) - 64;
-    }
-    biased - 1023
-}
-
-/// `x · 2^k`, in steps that stay within `f64`'s exponent range (2^k itself may not be one:
-/// k up to ±2044); exact unless the result is subnormal (then rounded) or beyond the range (±inf).
-fn ldexp(x: f64, k: i32) -> f64 {
-    // k in [−1022, 1023]: a biased exponent in [1, 2046], so 2^k is a normal f64.
-    let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
-    let half = k / 2;
-    step(
-        step(x, half.clamp(-1022, 1023)),
-        (k - half).clamp(-1022, 1023),
-    )
 }
 
 /// A⁻¹ and e for M = A·diag(2^e), where e_j = ⌊log2 max_i |m_ij|⌋ scales column j of A to

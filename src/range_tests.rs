@@ -319,3 +319,148 @@ fn huge_parameters_light_finitely_f64() {
     huge_parameters_light_finitely::<f64>(1e300);
     huge_parameters_light_finitely::<f64>(f64::MAX);
 }
+
+/// The image and depth of `vertices` (one face per three) rendered under the headlight with
+/// `camera` into a `width` x `height` viewport.
+fn draw<T: Real>(
+    vertices: &[[T; 3]],
+    scene: &Scene,
+    camera: &crate::camera::Camera,
+    shading: crate::render::Shading,
+    (width, height): (usize, usize),
+) -> (Vec<f64>, Vec<f64>) {
+    let faces: Vec<[i64; 3]> = (0..i64::try_from(vertices.len() / 3).unwrap())
+        .map(|f| [3 * f, 3 * f + 1, 3 * f + 2])
+        .collect();
+    let mesh = crate::render::Mesh {
+        vertices,
+        faces: &faces,
+        normals: None,
+        colors: None,
+    };
+    let options = crate::render::RenderOptions {
+        viewport: crate::raster::Viewport { width, height },
+        shading,
+        ..crate::render::RenderOptions::default()
+    };
+    let mut image = vec![T::ZERO; width * height * 4];
+    let mut depth = vec![T::ZERO; width * height];
+    crate::render::render(scene, &mesh, camera, &options, &mut image, &mut depth).unwrap();
+    let wide = |v: Vec<T>| v.into_iter().map(T::to_f64).collect::<Vec<_>>();
+    (wide(image), wide(depth))
+}
+
+/// `corners` times `scale` in `T`.
+fn scaled<T: Real>(corners: &[[f64; 3]], scale: f64) -> Vec<[T; 3]> {
+    corners
+        .iter()
+        .map(|c| c.map(|x| T::from_f64(x * scale)))
+        .collect()
+}
+
+fn huge_triangles_rasterise_as_small_ones<T: Real>(ks: std::ops::RangeInclusive<i32>, tol: f64) {
+    use crate::render::Shading;
+    let size = (17, 13);
+    let ortho = crate::camera::Camera::default();
+    // Enclosing the view; and with edges y = x/2 and x = 0.3·y... through it (lines through
+    // the origin, so a uniform scale keeps them where they are on screen).
+    let enclosing = [[-3.0, -3.0, 0.0], [3.0, -3.0, 0.0], [0.0, 3.0, 0.0]];
+    let partial = [[-3.0, -1.5, 0.0], [3.0, 1.5, 0.0], [3.0, -3.0, 0.0]];
+    for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+        for corners in [&enclosing, &partial] {
+            let (small, small_depth) = draw(
+                &scaled::<T>(corners, 1.0),
+                &headlight(),
+                &ortho,
+                shading,
+                size,
+            );
+            if corners == &enclosing {
+                assert!(small_depth.iter().all(|&z| z < 1.0));
+            } else {
+                let drawn = small_depth.iter().filter(|&&z| z < 1.0).count();
+                assert!(drawn > 20 && drawn < 17 * 13 - 20, "{drawn}");
+            }
+            for k in ks.clone() {
+                let s = pow10(k);
+                let (image, depth) = draw(
+                    &scaled::<T>(corners, s),
+                    &headlight(),
+                    &ortho,
+                    shading,
+                    size,
+                );
+                let coverage = |d: &[f64]| d.iter().map(|&z| z < 1.0).collect::<Vec<_>>();
+                assert_eq!(
+                    coverage(&depth),
+                    coverage(&small_depth),
+                    "{shading:?} 1e{k}"
+                );
+                for (a, b) in image.iter().zip(&small) {
+                    assert!((a - b).abs() <= tol, "{shading:?} 1e{k}: {a} vs {b}");
+                }
+                // A projection with w = s: the clip coordinates are the small triangle's
+                // times s, so it is the same triangle on screen, at the same depth.
+                let homogeneous = crate::camera::Camera {
+                    projection: DMat4::from_diagonal(glam::DVec4::new(1.0, 1.0, 1.0, s)),
+                    ..ortho
+                };
+                let (image, depth) = draw(
+                    &scaled::<T>(corners, s),
+                    &headlight(),
+                    &homogeneous,
+                    shading,
+                    size,
+                );
+                assert_eq!(
+                    coverage(&depth),
+                    coverage(&small_depth),
+                    "{shading:?} w 1e{k}"
+                );
+                for (a, b) in image.iter().zip(&small) {
+                    assert!((a - b).abs() <= tol, "{shading:?} w 1e{k}: {a} vs {b}");
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn huge_triangles_rasterise_as_small_ones_f64() {
+    huge_triangles_rasterise_as_small_ones::<f64>(0..=300, 1e-12);
+}
+
+#[test]
+fn huge_triangles_rasterise_as_small_ones_f32() {
+    huge_triangles_rasterise_as_small_ones::<f32>(0..=30, 1e-6);
+}
+
+fn huge_triangles_under_point_lights_stay_finite<T: Real>(ks: &[i32]) {
+    use crate::render::Shading;
+    let mut scene = spot_scene();
+    scene.lights[0].quadratic_attenuation = 1.0;
+    let enclosing = [[-3.0, -3.0, 0.0], [3.0, -3.0, 0.0], [0.0, 3.0, 0.0]];
+    let ortho = crate::camera::Camera::default();
+    for &k in ks {
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let (image, _) = draw(
+                &scaled::<T>(&enclosing, pow10(k)),
+                &scene,
+                &ortho,
+                shading,
+                (9, 7),
+            );
+            assert!(in_unit_interval(&image), "{shading:?} 1e{k}");
+        }
+    }
+}
+
+#[test]
+fn huge_triangles_under_point_lights_stay_finite_f64() {
+    huge_triangles_under_point_lights_stay_finite::<f64>(&[20, 100, 200, 300]);
+}
+
+#[test]
+fn huge_triangles_under_point_lights_stay_finite_f32() {
+    huge_triangles_under_point_lights_stay_finite::<f32>(&[10, 20, 30]);
+}

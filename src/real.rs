@@ -275,6 +275,31 @@ pub fn normalize_or_zero<T: Real>(v: T::Vec3) -> T::Vec3 {
     normalize_and_length::<T>(v).0
 }
 
+/// ⌊log2 |x|⌋ for finite nonzero `x` (subnormals included), from the bits; 0 for 0.
+pub(crate) fn exponent(x: f64) -> i32 {
+    if x == 0.0 {
+        return 0;
+    }
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if biased == 0 {
+        // Subnormal: lift by 2^64 (exact) and read the exponent there.
+        return exponent(x * 2f64.powi(64)) - 64;
+    }
+    biased - 1023
+}
+
+/// `x · 2^k`, in steps that stay within `f64`'s exponent range (2^k itself may not be one:
+/// k up to ±2044); exact unless the result is subnormal (then rounded) or beyond the range (±inf).
+pub(crate) fn ldexp(x: f64, k: i32) -> f64 {
+    // k in [−1022, 1023]: a biased exponent in [1, 2046], so 2^k is a normal f64.
+    let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
+    let half = k / 2;
+    step(
+        step(x, half.clamp(-1022, 1023)),
+        (k - half).clamp(-1022, 1023),
+    )
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::real::{normalize_and_length, normalize_or_zero};
+use crate::real::{exponent, ldexp, normalize_and_length, normalize_or_zero};
 
 /// A face is degenerate when the sine of the angle between its first two edges is at most this
 /// many ulp of the dtype: at its precision the cross product is rounding noise. The test is
@@ -40,10 +40,25 @@ fn degenerate(cross_length: f64, l0: f64, l1: f64, epsilon: f64) -> bool {
     cross_length <= DEGENERATE_ULPS * epsilon * l0 * l1
 }
 
-/// The normal of a face some of whose squared lengths leave the normal range: each length
-/// rescaled by an exact power of two first (see [`normalize_and_length`]).
+/// `e` times the power of two that brings its largest |component| into [1, 2) (exact; `e`
+/// itself when zero).
+fn prescaled(e: DVec3) -> DVec3 {
+    let top = e.abs().max_element();
+    if top > 0.0 && top.is_finite() {
+        e.map(|x| ldexp(x, -exponent(top)))
+    } else {
+        e
+    }
+}
+
+/// The normal of a face some of whose squared lengths leave the normal range: the edges
+/// scaled by exact powers of two first, so their cross product neither over- nor underflows
+/// (edges beyond 1e154 made it infinite, the normal NaN), and each length rescaled likewise
+/// (see [`normalize_and_length`]). Both scalings leave the direction's bits and the
+/// degeneracy test as they were wherever the unscaled products were in range.
 #[cold]
 fn normal_rescaled(e0: DVec3, e1: DVec3, epsilon: f64) -> DVec3 {
+    let (e0, e1) = (prescaled(e0), prescaled(e1));
     let (unit, length) = normalize_and_length::<f64>(cross(e0, e1));
     let (l0, l1) = (
         normalize_and_length::<f64>(e0).1,
@@ -169,7 +184,7 @@ mod tests {
     #[test]
     fn cosines_of_tiny_and_huge_triangles_take_the_rescaled_path_and_agree() {
         // Squared edges of about 2^-1080 underflow, of 2^1040 overflow: both leave the fast
-        // path. (The cross product itself under- or overflows there, as trimesh's does.)
+        // path; the cross product is formed from prescaled edges there.
         for scale in [2f64.powi(-540), 2f64.powi(520)] {
             for corners in TRIANGLES {
                 let (_, c1) = normal_and_cosines(triangle(corners, 1.0), f64::EPSILON);
