@@ -434,7 +434,8 @@ impl<T: Real> Prepared<T> {
     /// Validates `scene` and `options` and precomputes the per-light constants.
     ///
     /// # Errors
-    /// Any failure of [`Scene::validate`] or [`Transform::new`].
+    /// Any failure of [`Scene::validate`] or [`Transform::for_shading`], or a light or viewer
+    /// point beyond `T`'s range.
     pub fn new(scene: &Scene, options: &ShadeOptions) -> Result<Self, Error> {
         scene.validate()?;
         if options.strict {
