@@ -43,7 +43,7 @@ pub use plan::Plan;
 pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
 pub use render::{render, Mesh, RenderOptions, Shading};
-pub use scene::{Scene, Specular};
+pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit, VertexColors};
 
 #[cfg(feature = "python")]

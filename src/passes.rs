@@ -21,7 +21,7 @@ use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
 use crate::render::Mesh;
-use crate::scene::Scene;
+use crate::scene::{Scene, ValidScene};
 use crate::shade::{shade, VertexColors};
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
 
@@ -148,7 +148,7 @@ impl<'a> Frame<'a> {
 /// One lighting pass over a frame: what every mode reads.
 pub struct Pass<'a, T> {
     /// Lights, materials and light model.
-    pub scene: &'a Scene,
+    pub scene: &'a ValidScene,
     /// The mesh.
     pub mesh: &'a Mesh<'a, T>,
     /// The `shade` options, with the modelview.

@@ -83,7 +83,8 @@ fn run(scene: &Scene, p: &[[f32; 3]], n: &[[f32; 3]], normalize: bool) -> Vec<f3
         normalize,
         ..ShadeOptions::default()
     };
-    shade(scene, p, n, None, &options, &mut out).unwrap();
+    let scene = scene.clone().validated().unwrap();
+    shade(&scene, p, n, None, &options, &mut out).unwrap();
     out
 }
 

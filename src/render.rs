@@ -16,7 +16,7 @@ use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
 use crate::real::Real;
-use crate::scene::Scene;
+use crate::scene::ValidScene;
 use crate::shade::{shade, VertexColors};
 use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS, NO_TRIANGLE};
 
@@ -203,7 +203,7 @@ fn setup<T: Real>(mesh: &Mesh<'_, T>, to_clip: DMat4, viewport: Viewport, cull: 
 /// A value error for a bad size, camera, model, background, normals, colours, scene or shading
 /// option; an index error for a face index out of range.
 pub fn render<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     mesh: &Mesh<'_, T>,
     camera: &Camera,
     options: &RenderOptions,
@@ -219,7 +219,7 @@ pub fn render<T: Real>(
         color_material: options.color_material,
         ..ShadeOptions::default()
     };
-    // A call on no vertices checks the scene and the options before any work is done.
+    // A call on no vertices checks the options against the scene before any work is done.
     let no_colors = mesh.colors.map(|c| VertexColors {
         data: &c.data[..0],
         width: c.width,
@@ -260,6 +260,7 @@ pub fn render<T: Real>(
 mod tests {
     use super::*;
     use crate::material::Material;
+    use crate::scene::Scene;
 
     fn emission_scene() -> Scene {
         Scene {
@@ -288,7 +289,7 @@ mod tests {
         let mut image = vec![0.0; width * height * 4];
         let mut depth = vec![0.0; width * height];
         render(
-            &emission_scene(),
+            &emission_scene().validated().unwrap(),
             mesh,
             &Camera::default(),
             options,

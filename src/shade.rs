@@ -16,7 +16,7 @@ use crate::lanes::{Lanes, MAX_LANES, V3};
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
-use crate::scene::Scene;
+use crate::scene::{Scene, ValidScene};
 
 pub use crate::kernel::VertexColors;
 
@@ -193,7 +193,7 @@ fn check_arrays<T: Real>(
 /// A value error for an invalid scene or modelview, mismatched lengths, colours without
 /// `color_material` (or the reverse), or an `out` of the wrong length.
 pub fn shade<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
@@ -217,7 +217,7 @@ pub(crate) fn as_uninit<T>(out: &mut [T]) -> &mut [MaybeUninit<T>] {
 /// # Errors
 /// As [`shade`].
 pub fn shade_uninit<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
@@ -320,7 +320,7 @@ pub(crate) fn run<T: Real>(
 ///
 /// # Errors
 /// As [`shade`] for an invalid scene or options.
-pub fn describe<T: Real>(scene: &Scene, options: &ShadeOptions) -> Result<String, Error> {
+pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
     let (bytes, lanes, plan) = if exact || std::mem::size_of::<T>() == 8 {
@@ -349,7 +349,8 @@ mod tests {
 
     fn shade_one<T: Real>(scene: &Scene, p: [T; 3], n: [T; 3], options: &ShadeOptions) -> Vec<T> {
         let mut out = vec![T::ZERO; scene.output_count() * 4];
-        shade(scene, &[p], &[n], None, options, &mut out).unwrap();
+        let scene = scene.clone().validated().unwrap();
+        shade(&scene, &[p], &[n], None, options, &mut out).unwrap();
         out
     }
 
@@ -453,7 +454,8 @@ mod tests {
     fn shade_rows(scene: &Scene, positions: &[[f32; 3]], normals: &[[f32; 3]]) -> Vec<f32> {
         let mut out = vec![0.0_f32; positions.len() * 4];
         let options = ShadeOptions::default();
-        shade(scene, positions, normals, None, &options, &mut out).unwrap();
+        let scene = scene.clone().validated().unwrap();
+        shade(&scene, positions, normals, None, &options, &mut out).unwrap();
         out
     }
 
@@ -479,7 +481,7 @@ mod tests {
 
     #[test]
     fn color_material_replaces_the_tracked_parameters() {
-        let scene = headlight_scene();
+        let scene = headlight_scene().validated().unwrap();
         let options = ShadeOptions {
             color_material: Some(ColorMaterial::parse("diffuse", "front_and_back").unwrap()),
             ..ShadeOptions::default()
@@ -505,7 +507,7 @@ mod tests {
     fn mismatched_lengths_are_rejected() {
         let mut out = vec![0.0; 8];
         let err = shade::<f64>(
-            &headlight_scene(),
+            &headlight_scene().validated().unwrap(),
             &[[0.0; 3]; 2],
             &[[0.0; 3]],
             None,
@@ -535,7 +537,9 @@ mod tests {
             },
             viewer: [0.0, 0.0, 0.0, 1.0],
             ..Scene::default()
-        };
+        }
+        .validated()
+        .unwrap();
         let n = 5000;
         let positions: Vec<[f32; 3]> = (0..n)
             .map(|i| {

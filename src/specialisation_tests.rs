@@ -169,6 +169,7 @@ fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
 /// The output bits of `plan` (new or general) on `isa`.
 fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
     let (scene, options) = scene_of(bits);
+    let scene = scene.validated().unwrap();
     let (positions, normals, colors) = vertices::<T>();
     let prepared = Prepared::<T>::new(&scene, &options).unwrap();
     let plan = if general {
@@ -227,7 +228,7 @@ fn the_subsets_reach_every_plan_flag() {
     let plans: Vec<Plan> = (0..1 << FEATURES)
         .map(|bits| {
             let (scene, options) = scene_of(bits);
-            Plan::new(&Prepared::<f32>::new(&scene, &options).unwrap())
+            Plan::new(&Prepared::<f32>::new(&scene.validated().unwrap(), &options).unwrap())
         })
         .collect();
     let both = |f: &dyn Fn(&Plan) -> bool| plans.iter().any(f) && !plans.iter().all(f);
