@@ -216,7 +216,10 @@ mod tests {
             ..Scene::default()
         };
         assert!(s.validate().unwrap_err().message.contains("light 1"));
-        assert_eq!(s.clone().validated().unwrap_err(), s.validate().unwrap_err());
+        assert_eq!(
+            s.clone().validated().unwrap_err(),
+            s.validate().unwrap_err()
+        );
         s.lights.clear();
         s.viewer = [0.0; 4];
         assert!(s.validate().unwrap_err().message.starts_with("viewer"));

@@ -16,6 +16,7 @@ use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run, VertexColors};
+use crate::stop::Stop;
 
 const FEATURES: u32 = 14;
 
@@ -190,7 +191,9 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
         &normals,
         colors,
         as_uninit(&mut out),
-    );
+        &Stop::new(),
+    )
+    .unwrap();
     out.iter().map(|x| x.to_f64().to_bits()).collect()
 }
 
