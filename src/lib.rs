@@ -28,6 +28,8 @@ mod property_tests;
 pub mod raster;
 pub mod real;
 pub mod render;
+#[cfg(test)]
+mod robust_tests;
 pub mod scene;
 pub mod shade;
 #[cfg(test)]
