@@ -1,7 +1,14 @@
 //! The vertex-to-face adjacency of a triangle mesh, which turns the sum over a vertex's faces
 //! into a gather: each vertex reads its faces in face order, so sums do not depend on threads.
 
+use crate::alloc::{try_collect, try_filled};
+use crate::error::Error;
 use crate::pages::Zeroed;
+use crate::stop::Stop;
+
+/// Corners per slab of the sequential counting sort, between polls of the stop: about a
+/// millisecond of work each.
+const CORNERS_PER_SLAB: usize = 1 << 18;
 
 /// A vertex index that `normals::check_faces` has proven to be in `0..vertex_count`.
 #[inline]
@@ -23,24 +30,43 @@ impl Adjacency {
     pub(crate) const MAX_FACES: usize = u32::MAX as usize / 3;
 
     /// A counting sort of the corners of checked `faces` (at most [`Self::MAX_FACES`]) by
-    /// vertex: stable, so each vertex lists its faces in order.
-    pub(crate) fn new(faces: &[[i64; 3]], vertex_count: usize) -> Self {
-        let mut offsets = vec![0u32; vertex_count + 1];
-        for &v in faces.as_flattened() {
-            offsets[index(v) + 1] += 1;
+    /// vertex: stable, so each vertex lists its faces in order. `stop` is polled every
+    /// [`CORNERS_PER_SLAB`] corners or vertices.
+    ///
+    /// # Errors
+    /// A memory error for the offsets or the corners, or [`Error::interrupted`].
+    pub(crate) fn new(faces: &[[i64; 3]], vertex_count: usize, stop: &Stop) -> Result<Self, Error> {
+        let mut offsets = try_filled(vertex_count + 1, 0u32, "the vertex-to-face offsets")?;
+        for slab in faces.as_flattened().chunks(CORNERS_PER_SLAB) {
+            stop.check()?;
+            for &v in slab {
+                offsets[index(v) + 1] += 1;
+            }
         }
-        for i in 0..vertex_count {
-            offsets[i + 1] += offsets[i];
+        let mut total = 0;
+        for slab in offsets[1..].chunks_mut(CORNERS_PER_SLAB) {
+            stop.check()?;
+            for offset in slab {
+                total += *offset;
+                *offset = total;
+            }
         }
-        let mut next = offsets[..vertex_count].to_vec();
-        let mut corners = Zeroed::new(faces.len() * 3);
+        let mut next = try_collect(
+            offsets[..vertex_count].iter().copied(),
+            "the vertex-to-face cursors",
+        )?;
+        let mut corners = Zeroed::new(faces.len() * 3, "the vertex-to-face corners")?;
         let dst: &mut [u32] = &mut corners;
-        for (k, &v) in (0u32..).zip(faces.as_flattened()) {
-            let slot = &mut next[index(v)];
-            dst[*slot as usize] = k;
-            *slot += 1;
+        for (s, slab) in faces.as_flattened().chunks(CORNERS_PER_SLAB).enumerate() {
+            stop.check()?;
+            let first = s * CORNERS_PER_SLAB;
+            for (k, &v) in (first as u32..).zip(slab) {
+                let slot = &mut next[index(v)];
+                dst[*slot as usize] = k;
+                *slot += 1;
+            }
         }
-        Self { offsets, corners }
+        Ok(Self { offsets, corners })
     }
 
     /// The corners (`3·face + corner`) of vertex `v`, in face order.
@@ -57,7 +83,7 @@ mod tests {
     #[test]
     fn each_vertex_lists_its_corners_in_face_order() {
         let faces = [[0, 1, 2], [2, 1, 3], [3, 0, 2]];
-        let adjacency = Adjacency::new(&faces, 5);
+        let adjacency = Adjacency::new(&faces, 5, &Stop::new()).unwrap();
         assert_eq!(adjacency.corners_of(0), [0, 7]);
         assert_eq!(adjacency.corners_of(1), [1, 4]);
         assert_eq!(adjacency.corners_of(2), [2, 3, 8]);

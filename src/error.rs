@@ -3,13 +3,20 @@
 
 use std::fmt;
 
-/// Which Python exception an [`Error`] maps to.
+/// Which Python exception an [`Error`] maps to: a rejected argument (`Value`, `Index`), a
+/// buffer the allocator could not provide (`Memory`), or a call its caller stopped
+/// (`Interrupted`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ErrorKind {
     /// A value outside its range, a wrong shape or an unknown name (`ValueError`).
     Value,
     /// An index out of range (`IndexError`).
     Index,
+    /// A scratch buffer could not be allocated, or its size overflows (`MemoryError`).
+    Memory,
+    /// The caller's [`crate::Stop`] was requested before the call finished; the binding picks
+    /// the exception (e.g. a pending `KeyboardInterrupt`).
+    Interrupted,
 }
 
 /// A rejected input: the kind of the failure and a message naming the argument, the expected
@@ -36,6 +43,22 @@ impl Error {
         Self {
             kind: ErrorKind::Index,
             message: message.into(),
+        }
+    }
+
+    /// A memory error with the given message, e.g. `"cannot allocate 96 bytes for the ids"`.
+    pub fn memory(message: impl Into<String>) -> Self {
+        Self {
+            kind: ErrorKind::Memory,
+            message: message.into(),
+        }
+    }
+
+    /// The error of a call whose [`crate::Stop`] was requested: message `"interrupted"`.
+    pub fn interrupted() -> Self {
+        Self {
+            kind: ErrorKind::Interrupted,
+            message: "interrupted".to_owned(),
         }
     }
 }

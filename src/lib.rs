@@ -8,6 +8,7 @@
 //! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
 
 mod adjacency;
+mod alloc;
 pub mod camera;
 pub mod clip;
 pub mod dispatch;
@@ -29,10 +30,13 @@ mod range_tests;
 pub mod raster;
 pub mod real;
 pub mod render;
+#[cfg(test)]
+mod robust_tests;
 pub mod scene;
 pub mod shade;
 #[cfg(test)]
 mod specialisation_tests;
+pub mod stop;
 mod triangle;
 pub mod visibility;
 
@@ -45,8 +49,9 @@ pub use plan::Plan;
 pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
 pub use render::{render, Mesh, RenderOptions, Shading};
-pub use scene::{Scene, Specular};
+pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit, VertexColors};
+pub use stop::Stop;
 
 #[cfg(feature = "python")]
 mod python;

@@ -15,6 +15,7 @@ use crate::adjacency::{index, Adjacency};
 use crate::error::Error;
 use crate::pages::Zeroed;
 use crate::real::{normalize_and_length, Real};
+use crate::stop::Stop;
 use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 
 /// Rows per parallel task for the per-face and per-vertex loops.
@@ -105,15 +106,16 @@ fn corners<T: Real>(vertices: &[[T; 3]], face: [i64; 3]) -> [DVec3; 3] {
 }
 
 /// Writes the unit normal of every face into `out` (one row per face); degenerate faces get
-/// (0, 0, 0).
+/// (0, 0, 0). `stop` is polled before every task of [`ROWS_PER_TASK`] faces.
 ///
 /// # Errors
-/// An index error from [`check_faces`], or a value error when `out` does not have one row per
-/// face.
+/// An index error from [`check_faces`], a value error when `out` does not have one row per
+/// face, or [`Error::interrupted`] when `stop` was requested before the call finished.
 pub fn face_normals<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
     out: &mut [[T; 3]],
+    stop: &Stop,
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
     check_rows(out, faces.len())?;
@@ -121,12 +123,15 @@ pub fn face_normals<T: Real>(
     out.par_chunks_mut(ROWS_PER_TASK)
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|(dst, src)| {
+            if stop.is_requested() {
+                return;
+            }
             for (d, &face) in dst.iter_mut().zip(src) {
                 let normal = face_normal(corners(vertices, face), epsilon);
                 *d = normal.to_array().map(T::from_f64);
             }
         });
-    Ok(())
+    stop.check()
 }
 
 /// What the faces add to their vertices, one entry per face. The buffers are fresh on every
@@ -142,56 +147,78 @@ enum FaceTerms {
 }
 
 impl FaceTerms {
-    fn new<T: Real>(vertices: &[[T; 3]], faces: &[[i64; 3]], weighting: Weighting) -> Self {
+    /// The terms of every face, polling `stop` per task.
+    ///
+    /// # Errors
+    /// A memory error for the buffers, or [`Error::interrupted`].
+    fn new<T: Real>(
+        vertices: &[[T; 3]],
+        faces: &[[i64; 3]],
+        weighting: Weighting,
+        stop: &Stop,
+    ) -> Result<Self, Error> {
         let epsilon = T::EPSILON.to_f64();
-        match weighting {
-            Weighting::Area => Self::Area(per_face(faces, |face| {
+        Ok(match weighting {
+            Weighting::Area => Self::Area(per_face(faces, stop, |face| {
                 let [a, b, c] = corners(vertices, face);
                 let v = cross(b - a, c - b);
                 [v.x, v.y, v.z, v.length()]
-            })),
-            Weighting::Uniform => Self::Uniform(per_face(faces, |face| {
+            })?),
+            Weighting::Uniform => Self::Uniform(per_face(faces, stop, |face| {
                 face_normal(corners(vertices, face), epsilon).to_array()
-            })),
-            Weighting::Angle => {
-                let (n, w) = angle_terms(vertices, faces, epsilon);
-                Self::Angle(n, w)
-            }
-        }
+            })?),
+            Weighting::Angle => angle_terms(vertices, faces, epsilon, stop)?,
+        })
     }
 }
 
-/// `term(face)` for every face, in parallel, into a fresh buffer.
-fn per_face<R, F>(faces: &[[i64; 3]], term: F) -> Zeroed<R>
+/// `term(face)` for every face, in parallel, into a fresh buffer; tasks that start after `stop`
+/// is requested are skipped.
+///
+/// # Errors
+/// A memory error for the buffer, or [`Error::interrupted`].
+fn per_face<R, F>(faces: &[[i64; 3]], stop: &Stop, term: F) -> Result<Zeroed<R>, Error>
 where
     R: bytemuck::Pod + Send,
     F: Fn([i64; 3]) -> R + Sync,
 {
-    let mut terms = Zeroed::new(faces.len());
+    let mut terms = Zeroed::new(faces.len(), "the face terms")?;
     terms
         .par_chunks_mut(ROWS_PER_TASK)
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|(dst, src)| {
+            if stop.is_requested() {
+                return;
+            }
             for (d, &face) in dst.iter_mut().zip(src) {
                 *d = term(face);
             }
         });
-    terms
+    stop.check()?;
+    Ok(terms)
 }
 
-/// Per face, the unit normal and the angle weights of its corners (see [`corner_weights`]).
+/// Per face, the unit normal and the angle weights of its corners (see [`corner_weights`]), as
+/// [`FaceTerms::Angle`].
+///
+/// # Errors
+/// A memory error for the buffers, or [`Error::interrupted`].
 fn angle_terms<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
     epsilon: f64,
-) -> (Zeroed<[f64; 3]>, Zeroed<[f64; 3]>) {
-    let mut normals = Zeroed::<[f64; 3]>::new(faces.len());
-    let mut weights = Zeroed::<[f64; 3]>::new(faces.len());
+    stop: &Stop,
+) -> Result<FaceTerms, Error> {
+    let mut normals = Zeroed::<[f64; 3]>::new(faces.len(), "the face normals")?;
+    let mut weights = Zeroed::<[f64; 3]>::new(faces.len(), "the corner weights")?;
     normals
         .par_chunks_mut(ROWS_PER_TASK)
         .zip(weights.par_chunks_mut(ROWS_PER_TASK))
         .zip(faces.par_chunks(ROWS_PER_TASK))
         .for_each(|((dn, dw), src)| {
+            if stop.is_requested() {
+                return;
+            }
             for ((dn, dw), src) in dn
                 .chunks_mut(FACES_PER_BLOCK)
                 .zip(dw.chunks_mut(FACES_PER_BLOCK))
@@ -207,22 +234,27 @@ fn angle_terms<T: Real>(
                 }
             }
         });
-    (normals, weights)
+    stop.check()?;
+    Ok(FaceTerms::Angle(normals, weights))
 }
 
 /// Writes the normal of every vertex into `out` (one row per vertex): the normalised sum of its
 /// faces' contributions under `weighting`, or (0, 0, 0) for a vertex that no face uses, whose
 /// faces are all degenerate, or whose contributions cancel (see [`CANCELLED_ULPS`]). Sums run in
-/// `f64` in face order.
+/// `f64` in face order. `stop` is polled before every task of [`ROWS_PER_TASK`] faces or
+/// vertices, and in the sequential adjacency build.
 ///
 /// # Errors
-/// An index error from [`check_faces`], or a value error when `out` does not have one row per
-/// vertex or there are more faces than the adjacency can hold ([`Adjacency::MAX_FACES`]).
+/// An index error from [`check_faces`], a value error when `out` does not have one row per
+/// vertex or there are more faces than the adjacency can hold ([`Adjacency::MAX_FACES`]), a
+/// memory error when the scratch buffers (24 to 60 bytes a face) cannot be allocated, or
+/// [`Error::interrupted`] when `stop` was requested before the call finished.
 pub fn vertex_normals<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
     weighting: Weighting,
     out: &mut [[T; 3]],
+    stop: &Stop,
 ) -> Result<(), Error> {
     check_faces(faces, vertices.len())?;
     check_rows(out, vertices.len())?;
@@ -235,40 +267,42 @@ pub fn vertex_normals<T: Real>(
     }
     // The adjacency's counting sort is sequential: build it while the faces are computed.
     let (adjacency, terms) = rayon::join(
-        || Adjacency::new(faces, vertices.len()),
-        || FaceTerms::new(vertices, faces, weighting),
+        || Adjacency::new(faces, vertices.len(), stop),
+        || FaceTerms::new(vertices, faces, weighting, stop),
     );
+    let (adjacency, terms) = (adjacency?, terms?);
     let cancel = CANCELLED_ULPS * T::EPSILON.to_f64();
     // Corner `k` (`3·face + corner`) adds a vector and its length to its vertex.
     match &terms {
         FaceTerms::Area(cross) => {
             let cross: &[[f64; 4]] = cross;
-            gather(&adjacency, cancel, out, |k| {
+            gather(&adjacency, cancel, out, stop, |k| {
                 let [x, y, z, length] = cross[k / 3];
                 (DVec3::new(x, y, z), length)
             });
         }
         FaceTerms::Uniform(normals) => {
             let normals: &[[f64; 3]] = normals;
-            gather(&adjacency, cancel, out, |k| {
+            gather(&adjacency, cancel, out, stop, |k| {
                 let v = DVec3::from_array(normals[k / 3]);
                 (v, if v == DVec3::ZERO { 0.0 } else { 1.0 })
             });
         }
         FaceTerms::Angle(normals, weights) => {
             let (normals, weights): (&[[f64; 3]], &[[f64; 3]]) = (normals, weights);
-            gather(&adjacency, cancel, out, |k| {
+            gather(&adjacency, cancel, out, stop, |k| {
                 let (normal, weight) = (normals[k / 3], weights[k / 3][k % 3]);
                 (DVec3::from_array(normal) * weight, weight)
             });
         }
     }
-    Ok(())
+    stop.check()
 }
 
 /// Writes the normalised sum of every vertex's corner terms into `out` (one row per vertex), or
-/// zero where the sum is at most `cancel` times the sum of the terms' lengths.
-fn gather<T, F>(adjacency: &Adjacency, cancel: f64, out: &mut [[T; 3]], corner: F)
+/// zero where the sum is at most `cancel` times the sum of the terms' lengths; tasks that start
+/// after `stop` is requested are skipped.
+fn gather<T, F>(adjacency: &Adjacency, cancel: f64, out: &mut [[T; 3]], stop: &Stop, corner: F)
 where
     T: Real,
     F: Fn(usize) -> (DVec3, f64) + Sync,
@@ -276,6 +310,9 @@ where
     out.par_chunks_mut(ROWS_PER_TASK)
         .enumerate()
         .for_each(|(t, dst)| {
+            if stop.is_requested() {
+                return;
+            }
             for (j, d) in dst.iter_mut().enumerate() {
                 let (mut sum, mut magnitude) = (DVec3::ZERO, 0.0);
                 for &k in adjacency.corners_of(t * ROWS_PER_TASK + j) {
@@ -328,10 +365,10 @@ mod tests {
     fn one_triangle() {
         let v = [[0.0_f32, 0.0, 0.0], [2.0, 0.0, 0.0], [0.0, 3.0, 0.0]];
         let mut out = [[0.0; 3]];
-        face_normals(&v, &[[0, 1, 2]], &mut out).unwrap();
+        face_normals(&v, &[[0, 1, 2]], &mut out, &Stop::new()).unwrap();
         assert_eq!(out, [[0.0, 0.0, 1.0]]);
         let mut vn = [[0.0; 3]; 3];
-        vertex_normals(&v, &[[0, 1, 2]], Weighting::Angle, &mut vn).unwrap();
+        vertex_normals(&v, &[[0, 1, 2]], Weighting::Angle, &mut vn, &Stop::new()).unwrap();
         assert_eq!(vn, [[0.0, 0.0, 1.0]; 3]);
     }
 
@@ -339,7 +376,7 @@ mod tests {
     fn cube_corners_point_along_the_diagonal_with_angle_weighting() {
         let (v, f) = cube();
         let mut vn = vec![[0.0; 3]; 8];
-        vertex_normals(&v, &f, Weighting::Angle, &mut vn).unwrap();
+        vertex_normals(&v, &f, Weighting::Angle, &mut vn, &Stop::new()).unwrap();
         let s = 1.0 / 3f64.sqrt();
         for (i, n) in vn.iter().enumerate() {
             let expected = [(i & 1) as f64, ((i >> 1) & 1) as f64, ((i >> 2) & 1) as f64]
@@ -359,11 +396,11 @@ mod tests {
             [5.0, 5.0, 5.0],
         ];
         let mut fnorm = [[9.0; 3]];
-        face_normals(&v, &[[0, 1, 2]], &mut fnorm).unwrap();
+        face_normals(&v, &[[0, 1, 2]], &mut fnorm, &Stop::new()).unwrap();
         assert_eq!(fnorm, [[0.0; 3]]);
         for w in [Weighting::Angle, Weighting::Area, Weighting::Uniform] {
             let mut vn = [[9.0; 3]; 4];
-            vertex_normals(&v, &[[0, 1, 2]], w, &mut vn).unwrap();
+            vertex_normals(&v, &[[0, 1, 2]], w, &mut vn, &Stop::new()).unwrap();
             assert_eq!(vn, [[0.0; 3]; 4], "{w:?}");
         }
     }
@@ -373,7 +410,7 @@ mod tests {
         let v = [[0.0_f64, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
         for w in [Weighting::Angle, Weighting::Area, Weighting::Uniform] {
             let mut vn = [[9.0; 3]; 3];
-            vertex_normals(&v, &[[0, 1, 2], [0, 2, 1]], w, &mut vn).unwrap();
+            vertex_normals(&v, &[[0, 1, 2], [0, 2, 1]], w, &mut vn, &Stop::new()).unwrap();
             assert_eq!(vn, [[0.0; 3]; 3], "{w:?}");
         }
     }
@@ -383,7 +420,7 @@ mod tests {
         for scale in [1e-150, 1e-7, 1.0, 1e150] {
             let v = [[0.0, 0.0, 0.0], [scale, 0.0, 0.0], [0.0, scale, 0.0]];
             let mut out = [[0.0; 3]];
-            face_normals(&v, &[[0, 1, 2]], &mut out).unwrap();
+            face_normals(&v, &[[0, 1, 2]], &mut out, &Stop::new()).unwrap();
             assert_eq!(out, [[0.0, 0.0, 1.0]], "scale {scale}");
         }
     }
@@ -392,8 +429,14 @@ mod tests {
     fn bad_indices_name_the_face() {
         let v = [[0.0_f64; 3]; 3];
         let mut out = [[0.0; 3]; 3];
-        let err =
-            vertex_normals(&v, &[[0, 1, 2], [0, 3, 1]], Weighting::Angle, &mut out).unwrap_err();
+        let err = vertex_normals(
+            &v,
+            &[[0, 1, 2], [0, 3, 1]],
+            Weighting::Angle,
+            &mut out,
+            &Stop::new(),
+        )
+        .unwrap_err();
         assert_eq!(err.kind, crate::ErrorKind::Index);
         assert!(
             err.message.contains("face 1 refers to vertex 3")
@@ -423,8 +466,8 @@ mod tests {
         };
         let mut out = vec![[T::ZERO; 3]; rows];
         pool.install(|| match weighting {
-            Some(w) => vertex_normals(v, f, w, &mut out),
-            None => face_normals(v, f, &mut out),
+            Some(w) => vertex_normals(v, f, w, &mut out, &Stop::new()),
+            None => face_normals(v, f, &mut out, &Stop::new()),
         })
         .unwrap();
         out.as_flattened()

@@ -12,6 +12,9 @@ use std::ops::{Deref, DerefMut};
 
 use bytemuck::Pod;
 
+use crate::alloc::try_filled;
+use crate::error::Error;
+
 /// Buffers at least this large are mapped: glibc's largest mmap threshold on 64-bit systems.
 const MAPPED_BYTES: usize = 32 << 20;
 
@@ -24,18 +27,23 @@ pub(crate) enum Zeroed<T> {
 }
 
 impl<T: Pod> Zeroed<T> {
-    /// `len` zeros.
-    pub(crate) fn new(len: usize) -> Self {
-        let bytes = len * size_of::<T>();
-        if bytes >= MAPPED_BYTES {
-            if let Ok(map) = memmap2::MmapMut::map_anon(bytes) {
-                // Only a hint: without transparent huge pages the mapping still works.
-                #[cfg(target_os = "linux")]
-                let _ = map.advise(memmap2::Advice::HugePage);
-                return Self::Mapped(map, len, PhantomData);
+    /// `len` zeros, for `what`.
+    ///
+    /// # Errors
+    /// A memory error naming `what` when neither a mapping nor the heap can hold them.
+    pub(crate) fn new(len: usize, what: &str) -> Result<Self, Error> {
+        if let Some(bytes) = len.checked_mul(size_of::<T>()) {
+            if bytes >= MAPPED_BYTES {
+                if let Ok(map) = memmap2::MmapMut::map_anon(bytes) {
+                    // Only a hint: without transparent huge pages the mapping still works.
+                    #[cfg(target_os = "linux")]
+                    let _ = map.advise(memmap2::Advice::HugePage);
+                    return Ok(Self::Mapped(map, len, PhantomData));
+                }
             }
         }
-        Self::Heap(vec![T::zeroed(); len])
+        // A failed mapping may still fit the heap; an overflowing size fails here too.
+        Ok(Self::Heap(try_filled(len, T::zeroed(), what)?))
     }
 }
 
@@ -65,7 +73,7 @@ mod tests {
     #[test]
     fn small_and_large_buffers_start_at_zero_and_hold_what_is_written() {
         for len in [0, 10, MAPPED_BYTES / 4 + 1] {
-            let mut buffer = Zeroed::<u32>::new(len);
+            let mut buffer = Zeroed::<u32>::new(len, "the test").unwrap();
             assert_eq!(buffer.len(), len);
             assert!(matches!(buffer, Zeroed::Mapped(..)) == (len > 10));
             assert!(buffer.iter().all(|&x| x == 0));
@@ -73,6 +81,15 @@ mod tests {
                 *x = i as u32;
             }
             assert!(buffer.iter().enumerate().all(|(i, &x)| x == i as u32));
+        }
+    }
+
+    #[test]
+    fn absurd_sizes_are_memory_errors() {
+        // 2^60 bytes: beyond any address space, so both the mapping and the heap refuse.
+        for len in [1 << 57, usize::MAX / 4] {
+            let err = Zeroed::<u64>::new(len, "the test").err().unwrap();
+            assert_eq!(err.kind, crate::ErrorKind::Memory, "{}", err.message);
         }
     }
 }

@@ -15,15 +15,21 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::adjacency::index;
+use crate::alloc::{count, try_collect, try_par_collect};
 use crate::error::Error;
 use crate::normals::face_normals;
+use crate::pages::Zeroed;
 use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
 use crate::render::Mesh;
-use crate::scene::Scene;
+use crate::scene::{Scene, ValidScene};
 use crate::shade::{shade, VertexColors};
+use crate::stop::Stop;
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
+
+/// Faces per parallel task of the flat pass's gather of the provoking colours.
+const FACES_PER_TASK: usize = 4096;
 
 /// The RGBA of a fragment from its colours in the scene's output order (`colour(k)` is colour
 /// k, front before back, primary before secondary): the back ones for a back-facing triangle
@@ -63,15 +69,20 @@ fn shaded<T: Real>(out: &[T], n: usize, plane: usize, i: usize) -> [f64; 4] {
 }
 
 /// `data` cut into consecutive pieces of `counts[r]·width` values, one per image row.
-fn split_rows<'a, X>(mut data: &'a mut [X], counts: &[usize], width: usize) -> Vec<&'a mut [X]> {
-    counts
-        .iter()
-        .map(|&count| {
-            let (head, tail) = std::mem::take(&mut data).split_at_mut(count * width);
-            data = tail;
-            head
-        })
-        .collect()
+///
+/// # Errors
+/// A memory error for the list of pieces.
+fn split_rows<'a, X>(
+    mut data: &'a mut [X],
+    counts: &[usize],
+    width: usize,
+) -> Result<Vec<&'a mut [X]>, Error> {
+    let pieces = counts.iter().map(|&count| {
+        let (head, tail) = std::mem::take(&mut data).split_at_mut(count * width);
+        data = tail;
+        head
+    });
+    try_collect(pieces, "the image rows")
 }
 
 /// The visible pixels: which triangle is seen at each.
@@ -88,46 +99,60 @@ pub struct Frame<'a> {
 
 impl<'a> Frame<'a> {
     /// The frame of a visibility buffer.
-    pub fn new(viewport: Viewport, triangles: &'a Triangles, ids: &'a [u32]) -> Self {
-        let counts = ids
-            .par_chunks(viewport.width)
-            .map(|row| row.iter().filter(|&&id| id != NO_TRIANGLE).count())
-            .collect();
-        Self {
+    ///
+    /// # Errors
+    /// A memory error for the row counts.
+    pub fn new(
+        viewport: Viewport,
+        triangles: &'a Triangles,
+        ids: &'a [u32],
+    ) -> Result<Self, Error> {
+        let counts = try_par_collect(
+            ids.par_chunks(viewport.width)
+                .map(|row| row.iter().filter(|&&id| id != NO_TRIANGLE).count()),
+            "the row counts",
+        )?;
+        Ok(Self {
             viewport,
             triangles,
             ids,
             counts,
-        }
+        })
     }
 
     /// The index of the first drawn pixel of each row among all drawn pixels, in row-major order.
-    fn starts(&self) -> Vec<usize> {
+    fn starts(&self) -> Result<Vec<usize>, Error> {
         let mut total = 0;
-        self.counts
-            .iter()
-            .map(|&c| {
-                total += c;
-                total - c
-            })
-            .collect()
+        let starts = self.counts.iter().map(|&c| {
+            total += c;
+            total - c
+        });
+        try_collect(starts, "the row starts")
     }
 
     /// Writes `colour(triangle, x, y, k)` (pixel (x, y) in window coordinates, the k-th drawn
-    /// pixel) at every drawn pixel of `image` and `background` elsewhere.
+    /// pixel) at every drawn pixel of `image` and `background` elsewhere, skipping the rows
+    /// that start after `stop` is requested.
+    ///
+    /// # Errors
+    /// A memory error for the row starts, or [`Error::interrupted`].
     fn paint<T: Real>(
         &self,
         image: &mut [T],
         background: [f64; 4],
+        stop: &Stop,
         colour: impl Fn(&Triangle, usize, usize, usize) -> [f64; 4] + Sync,
-    ) {
+    ) -> Result<(), Error> {
         let width = self.viewport.width;
-        let starts = self.starts();
+        let starts = self.starts()?;
         image
             .par_chunks_mut(width * 4)
             .zip(self.ids.par_chunks(width))
             .enumerate()
             .for_each(|(row, (pixels, ids))| {
+                if stop.is_requested() {
+                    return;
+                }
                 let y = window_row(self.viewport, row);
                 let mut k = starts[row];
                 for (x, (pixel, &id)) in pixels.chunks_exact_mut(4).zip(ids).enumerate() {
@@ -142,13 +167,14 @@ impl<'a> Frame<'a> {
                     }
                 }
             });
+        stop.check()
     }
 }
 
 /// One lighting pass over a frame: what every mode reads.
 pub struct Pass<'a, T> {
     /// Lights, materials and light model.
-    pub scene: &'a Scene,
+    pub scene: &'a ValidScene,
     /// The mesh.
     pub mesh: &'a Mesh<'a, T>,
     /// The `shade` options, with the modelview.
@@ -163,11 +189,12 @@ impl<T: Real> Pass<'_, T> {
     /// Gouraud: the vertices are lit with `normals` (one per vertex), the colours interpolated.
     ///
     /// # Errors
-    /// Those of [`shade`].
-    pub fn gouraud(&self, normals: &[[T; 3]], image: &mut [T]) -> Result<(), Error> {
+    /// Those of [`shade`]; a memory error for the vertex colours.
+    pub fn gouraud(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
         let mesh = self.mesh;
         let n = mesh.vertices.len();
-        let mut colours = vec![T::ZERO; self.scene.output_count() * n * 4];
+        let len = count(&[self.scene.output_count(), n, 4], "the vertex colours")?;
+        let mut colours = Zeroed::<T>::new(len, "the vertex colours")?;
         shade(
             self.scene,
             mesh.vertices,
@@ -175,46 +202,63 @@ impl<T: Real> Pass<'_, T> {
             mesh.colors,
             &self.options,
             &mut colours,
+            stop,
         )?;
         let rows = colours.as_chunks::<4>().0;
-        self.frame.paint(image, self.background, |t, x, y, _| {
-            let face = mesh.faces[t.face as usize];
-            let weights = t.weights_at(x, y);
-            fragment(self.scene, t.front, |plane| {
-                // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
-                interpolate(&rows[plane * n..(plane + 1) * n], face, weights)
-                    .map(|c| c.clamp(0.0, 1.0))
+        self.frame
+            .paint(image, self.background, stop, |t, x, y, _| {
+                let face = mesh.faces[t.face as usize];
+                let weights = t.weights_at(x, y);
+                fragment(self.scene, t.front, |plane| {
+                    // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
+                    interpolate(&rows[plane * n..(plane + 1) * n], face, weights)
+                        .map(|c| c.clamp(0.0, 1.0))
+                })
             })
-        });
-        Ok(())
     }
 
     /// Flat: each face is lit at its provoking (last) vertex with its normal, the mesh's
     /// (one per face) or the face normal.
     ///
     /// # Errors
-    /// Those of [`shade`] and [`face_normals`].
-    pub fn flat(&self, image: &mut [T]) -> Result<(), Error> {
+    /// Those of [`shade`] and [`face_normals`]; a memory error for the per-face buffers.
+    pub fn flat(&self, image: &mut [T], stop: &Stop) -> Result<(), Error> {
         let mesh = self.mesh;
         let m = mesh.faces.len();
         let computed;
         let normals = if let Some(n) = mesh.normals {
             n
         } else {
-            let mut n = vec![[T::ZERO; 3]; m];
-            face_normals(mesh.vertices, mesh.faces, &mut n)?;
+            let mut n = Zeroed::<[T; 3]>::new(m, "the face normals")?;
+            face_normals(mesh.vertices, mesh.faces, &mut n, stop)?;
             computed = n;
             &computed
         };
-        let provoking: Vec<usize> = mesh.faces.iter().map(|f| index(f[2])).collect();
-        let positions: Vec<[T; 3]> = provoking.iter().map(|&i| mesh.vertices[i]).collect();
-        let colors: Option<Vec<T>> = mesh.colors.map(|c| {
-            provoking
-                .iter()
-                .flat_map(|&i| &c.data[i * c.width..(i + 1) * c.width])
-                .copied()
-                .collect()
-        });
+        let provoking = |f: &[i64; 3]| index(f[2]);
+        let positions = try_par_collect(
+            mesh.faces.par_iter().map(|f| mesh.vertices[provoking(f)]),
+            "the provoking positions",
+        )?;
+        let colors: Option<Zeroed<T>> = match mesh.colors {
+            Some(c) => {
+                let len = count(&[m, c.width], "the provoking colours")?;
+                let mut data = Zeroed::<T>::new(len, "the provoking colours")?;
+                data.par_chunks_mut(FACES_PER_TASK * c.width)
+                    .zip(mesh.faces.par_chunks(FACES_PER_TASK))
+                    .for_each(|(dst, faces)| {
+                        if stop.is_requested() {
+                            return;
+                        }
+                        for (d, f) in dst.chunks_exact_mut(c.width).zip(faces) {
+                            let i = provoking(f);
+                            d.copy_from_slice(&c.data[i * c.width..(i + 1) * c.width]);
+                        }
+                    });
+                stop.check()?;
+                Some(data)
+            }
+            None => None,
+        };
         let colors = mesh
             .colors
             .zip(colors.as_deref())
@@ -222,7 +266,8 @@ impl<T: Real> Pass<'_, T> {
                 data,
                 width: c.width,
             });
-        let mut colours = vec![T::ZERO; self.scene.output_count() * m * 4];
+        let len = count(&[self.scene.output_count(), m, 4], "the face colours")?;
+        let mut colours = Zeroed::<T>::new(len, "the face colours")?;
         shade(
             self.scene,
             &positions,
@@ -230,34 +275,39 @@ impl<T: Real> Pass<'_, T> {
             colors,
             &self.options,
             &mut colours,
+            stop,
         )?;
-        self.frame.paint(image, self.background, |t, _, _, _| {
-            fragment(self.scene, t.front, |plane| {
-                shaded(&colours, m, plane, t.face as usize)
+        self.frame
+            .paint(image, self.background, stop, |t, _, _, _| {
+                fragment(self.scene, t.front, |plane| {
+                    shaded(&colours, m, plane, t.face as usize)
+                })
             })
-        });
-        Ok(())
     }
 
     /// Phong: positions, `normals` (one per vertex) and colours are interpolated to every drawn
     /// pixel, which are then lit in one call.
     ///
     /// # Errors
-    /// Those of [`shade`].
-    pub fn phong(&self, normals: &[[T; 3]], image: &mut [T]) -> Result<(), Error> {
+    /// Those of [`shade`]; a memory error for the pixel buffers.
+    pub fn phong(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
         let (mesh, frame) = (self.mesh, &self.frame);
         let total: usize = frame.counts.iter().sum();
         let color_width = mesh.colors.map_or(0, |c| c.width);
-        let mut positions = vec![[T::ZERO; 3]; total];
-        let mut pixel_normals = vec![[T::ZERO; 3]; total];
-        let mut colors = vec![T::ZERO; total * color_width];
-        split_rows(&mut positions, &frame.counts, 1)
+        let mut positions = Zeroed::<[T; 3]>::new(total, "the pixel positions")?;
+        let mut pixel_normals = Zeroed::<[T; 3]>::new(total, "the pixel normals")?;
+        let len = count(&[total, color_width], "the pixel colors")?;
+        let mut colors = Zeroed::<T>::new(len, "the pixel colors")?;
+        split_rows(&mut positions, &frame.counts, 1)?
             .into_par_iter()
-            .zip(split_rows(&mut pixel_normals, &frame.counts, 1))
-            .zip(split_rows(&mut colors, &frame.counts, color_width))
+            .zip(split_rows(&mut pixel_normals, &frame.counts, 1)?)
+            .zip(split_rows(&mut colors, &frame.counts, color_width)?)
             .zip(frame.ids.par_chunks(frame.viewport.width))
             .enumerate()
             .for_each(|(row, (((positions, normals_out), colors), ids))| {
+                if stop.is_requested() {
+                    return;
+                }
                 let y = window_row(frame.viewport, row);
                 let drawn = ids.iter().enumerate().filter(|(_, &id)| id != NO_TRIANGLE);
                 for (k, (x, &id)) in drawn.enumerate() {
@@ -275,11 +325,13 @@ impl<T: Real> Pass<'_, T> {
                     }
                 }
             });
+        stop.check()?;
         let colors = mesh.colors.map(|c| VertexColors {
             data: &colors,
             width: c.width,
         });
-        let mut colours = vec![T::ZERO; self.scene.output_count() * total * 4];
+        let len = count(&[self.scene.output_count(), total, 4], "the pixel colours")?;
+        let mut colours = Zeroed::<T>::new(len, "the pixel colours")?;
         shade(
             self.scene,
             &positions,
@@ -287,13 +339,14 @@ impl<T: Real> Pass<'_, T> {
             colors,
             &self.options,
             &mut colours,
+            stop,
         )?;
-        self.frame.paint(image, self.background, |t, _, _, k| {
-            fragment(self.scene, t.front, |plane| {
-                shaded(&colours, total, plane, k)
+        self.frame
+            .paint(image, self.background, stop, |t, _, _, k| {
+                fragment(self.scene, t.front, |plane| {
+                    shaded(&colours, total, plane, k)
+                })
             })
-        });
-        Ok(())
     }
 }
 

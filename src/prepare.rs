@@ -10,7 +10,7 @@ use crate::lanes::{Lanes, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
 use crate::real::{exponent, ldexp, normalize_and_length, normalize_or_zero, Real};
-use crate::scene::{Scene, Specular};
+use crate::scene::{Scene, Specular, ValidScene};
 
 /// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
 /// to `T`.
@@ -431,13 +431,14 @@ fn prepare_light<T: Real>(
 }
 
 impl<T: Real> Prepared<T> {
-    /// Validates `scene` and `options` and precomputes the per-light constants.
+    /// Validates `options` against the already validated `scene` and precomputes the per-light
+    /// constants.
     ///
     /// # Errors
-    /// Any failure of [`Scene::validate`] or [`Transform::for_shading`], or a light or viewer
-    /// point beyond `T`'s range.
-    pub fn new(scene: &Scene, options: &ShadeOptions) -> Result<Self, Error> {
-        scene.validate()?;
+    /// Any failure of [`Scene::validate_gl_ranges`] (with `options.strict`) or
+    /// [`Transform::for_shading`], or a light or viewer point beyond `T`'s range.
+    pub fn new(scene: &ValidScene, options: &ShadeOptions) -> Result<Self, Error> {
+        let scene: &Scene = scene.scene();
         if options.strict {
             scene.validate_gl_ranges()?;
         }

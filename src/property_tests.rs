@@ -9,6 +9,7 @@ use crate::material::Material;
 use crate::prepare::ShadeOptions;
 use crate::scene::{Scene, Specular};
 use crate::shade::shade;
+use crate::stop::Stop;
 
 fn colour() -> impl Strategy<Value = [f64; 4]> {
     (-1.0..2.0, -1.0..2.0, -1.0..2.0).prop_map(|(r, g, b)| [r, g, b, 1.0])
@@ -83,7 +84,8 @@ fn run(scene: &Scene, p: &[[f32; 3]], n: &[[f32; 3]], normalize: bool) -> Vec<f3
         normalize,
         ..ShadeOptions::default()
     };
-    shade(scene, p, n, None, &options, &mut out).unwrap();
+    let scene = scene.clone().validated().unwrap();
+    shade(&scene, p, n, None, &options, &mut out, &Stop::new()).unwrap();
     out
 }
 

@@ -9,6 +9,7 @@ use crate::prepare::ShadeOptions;
 use crate::real::Real;
 use crate::scene::Scene;
 use crate::shade::shade;
+use crate::stop::Stop;
 
 /// The colours `shade` computes for one vertex.
 fn shade_one<T: Real>(
@@ -18,7 +19,8 @@ fn shade_one<T: Real>(
     options: &ShadeOptions,
 ) -> Result<Vec<f64>, crate::Error> {
     let mut out = vec![T::ZERO; scene.output_count() * 4];
-    shade(scene, &[p], &[n], None, options, &mut out)?;
+    let scene = scene.clone().validated()?;
+    shade(&scene, &[p], &[n], None, options, &mut out, &Stop::new())?;
     Ok(out.iter().map(|x| x.to_f64()).collect())
 }
 
@@ -345,7 +347,17 @@ fn draw<T: Real>(
     };
     let mut image = vec![T::ZERO; width * height * 4];
     let mut depth = vec![T::ZERO; width * height];
-    crate::render::render(scene, &mesh, camera, &options, &mut image, &mut depth).unwrap();
+    let scene = scene.clone().validated().unwrap();
+    crate::render::render(
+        &scene,
+        &mesh,
+        camera,
+        &options,
+        &mut image,
+        &mut depth,
+        &Stop::new(),
+    )
+    .unwrap();
     let wide = |v: Vec<T>| v.into_iter().map(T::to_f64).collect::<Vec<_>>();
     (wide(image), wide(depth))
 }

@@ -66,8 +66,10 @@ impl_vector3!(Vec3, f32);
 impl_vector3!(DVec3, f64);
 
 /// A floating-point type the kernels compute in: `f32` or `f64`.
+// Pod: scratch buffers of `T` come zeroed from `pages::Zeroed`, mapped (not written) when large.
 pub trait Real:
     Copy
+    + bytemuck::Pod
     + Send
     + Sync
     + Debug

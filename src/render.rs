@@ -7,18 +7,21 @@ use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
 use crate::adjacency::index;
+use crate::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::error::Error;
 use crate::material::ColorMaterial;
 use crate::normals::{check_faces, vertex_normals, Weighting};
+use crate::pages::Zeroed;
 use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
 use crate::real::Real;
-use crate::scene::Scene;
+use crate::scene::ValidScene;
 use crate::shade::{shade, VertexColors};
-use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS, NO_TRIANGLE};
+use crate::stop::Stop;
+use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
 /// seven of a face.
@@ -119,7 +122,8 @@ fn validate<T: Real>(
 ) -> Result<(), Error> {
     options.viewport.validate()?;
     let Viewport { width, height } = options.viewport;
-    if pixels != width * height * 4 || depth != width * height {
+    let area = count(&[width, height], "the image")?;
+    if Some(pixels) != area.checked_mul(4) || depth != area {
         return Err(Error::value(format!(
             "the image must hold {height} x {width} x 4 values and the depth {height} x {width}, \
              got {pixels} and {depth}"
@@ -165,29 +169,49 @@ fn validate<T: Real>(
     Ok(())
 }
 
-/// The triangles to rasterise, face by face in order, after clipping and culling.
-fn setup<T: Real>(mesh: &Mesh<'_, T>, to_clip: DMat4, viewport: Viewport, cull: Cull) -> Triangles {
-    let clip: Vec<DVec4> = mesh
-        .vertices
-        .par_iter()
-        .map(|v| to_clip * DVec4::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64(), 1.0))
-        .collect();
-    let chunks = mesh
-        .faces
-        .par_chunks(FACES_PER_TASK)
-        .enumerate()
-        .map(|(chunk, faces)| {
-            let mut out = Vec::with_capacity(faces.len());
-            for (k, face) in faces.iter().enumerate() {
-                let face_index = (chunk * FACES_PER_TASK + k) as u32;
-                clip_triangle(face.map(|i| clip[index(i)]), |corners| {
-                    out.extend(Triangle::new(face_index, corners, viewport, cull));
-                });
-            }
-            out
-        })
-        .collect();
-    Triangles { chunks }
+/// The triangles to rasterise, face by face in order, after clipping and culling; `stop` is
+/// polled per task of [`FACES_PER_TASK`] faces.
+///
+/// # Errors
+/// A memory error for the clip coordinates or the triangles, or [`Error::interrupted`].
+fn setup<T: Real>(
+    mesh: &Mesh<'_, T>,
+    to_clip: DMat4,
+    viewport: Viewport,
+    cull: Cull,
+    stop: &Stop,
+) -> Result<Triangles, Error> {
+    let clip: Vec<DVec4> = try_par_collect(
+        mesh.vertices
+            .par_iter()
+            .map(|v| to_clip * DVec4::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64(), 1.0)),
+        "the clip coordinates",
+    )?;
+    let results = try_par_collect(
+        mesh.faces
+            .par_chunks(FACES_PER_TASK)
+            .enumerate()
+            .map(|(chunk, faces)| {
+                stop.check()?;
+                let mut out = try_with_capacity(faces.len(), "the triangles")?;
+                for (k, face) in faces.iter().enumerate() {
+                    // Clipping makes at most seven triangles of a face: room first, then no
+                    // allocation in `extend`.
+                    try_reserve(&mut out, 7, "the triangles")?;
+                    let face_index = (chunk * FACES_PER_TASK + k) as u32;
+                    clip_triangle(face.map(|i| clip[index(i)]), |corners| {
+                        out.extend(Triangle::new(face_index, corners, viewport, cull));
+                    });
+                }
+                Ok(out)
+            }),
+        "the triangle chunks",
+    )?;
+    let mut chunks = try_with_capacity(results.len(), "the triangle chunks")?;
+    for chunk in results {
+        chunks.push(chunk?);
+    }
+    Ok(Triangles { chunks })
 }
 
 /// Renders `mesh` seen by `camera` under `scene` into `image` ((height, width, 4) RGBA, row 0
@@ -199,16 +223,22 @@ fn setup<T: Real>(mesh: &Mesh<'_, T>, to_clip: DMat4, viewport: Viewport, cull: 
 /// drawn; a NaN normal or colour gives NaN pixels, as in [`shade`]. The result is the same for
 /// any number of threads.
 ///
+/// `stop` is polled by every pass, at least once per task of rows, faces or triangles; once it
+/// is requested the rest of the work is skipped and `image` and `depth` are left part-drawn.
+///
 /// # Errors
-/// A value error for a bad size, camera, model, background, normals, colours, scene or shading
-/// option; an index error for a face index out of range.
+/// A value error for a bad size, camera, model, background, normals, colours or shading
+/// option; an index error for a face index out of range; a memory error when a scratch buffer
+/// cannot be allocated; [`Error::interrupted`] when `stop` was requested before the call
+/// finished.
 pub fn render<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     mesh: &Mesh<'_, T>,
     camera: &Camera,
     options: &RenderOptions,
     image: &mut [T],
     depth: &mut [T],
+    stop: &Stop,
 ) -> Result<(), Error> {
     validate(mesh, camera, options, image.len(), depth.len())?;
     let modelview = camera.view * options.model;
@@ -219,40 +249,42 @@ pub fn render<T: Real>(
         color_material: options.color_material,
         ..ShadeOptions::default()
     };
-    // A call on no vertices checks the scene and the options before any work is done.
+    // A call on no vertices checks the options against the scene before any work is done.
     let no_colors = mesh.colors.map(|c| VertexColors {
         data: &c.data[..0],
         width: c.width,
     });
-    shade::<T>(scene, &[], &[], no_colors, &shade_options, &mut [])?;
+    shade::<T>(scene, &[], &[], no_colors, &shade_options, &mut [], stop)?;
 
     let viewport = options.viewport;
-    let triangles = setup(mesh, camera.projection * modelview, viewport, options.cull);
-    let mut ids = vec![NO_TRIANGLE; viewport.width * viewport.height];
-    visibility(&triangles, viewport, &mut ids, depth);
+    let to_clip = camera.projection * modelview;
+    let triangles = setup(mesh, to_clip, viewport, options.cull, stop)?;
+    // Zeroed: a large buffer is mapped, not written; visibility clears it band by band.
+    let mut ids = Zeroed::<u32>::new(viewport.width * viewport.height, "the triangle ids")?;
+    visibility(&triangles, viewport, &mut ids, depth, stop)?;
     let pass = Pass {
         scene,
         mesh,
         options: shade_options,
-        frame: Frame::new(viewport, &triangles, &ids),
+        frame: Frame::new(viewport, &triangles, &ids)?,
         background: options.background,
     };
     if options.shading == Shading::Flat {
-        return pass.flat(image);
+        return pass.flat(image, stop);
     }
     let computed;
     let normals = if let Some(n) = mesh.normals {
         n
     } else {
-        let mut n = vec![[T::ZERO; 3]; mesh.vertices.len()];
-        vertex_normals(mesh.vertices, mesh.faces, Weighting::Angle, &mut n)?;
+        let mut n = Zeroed::<[T; 3]>::new(mesh.vertices.len(), "the vertex normals")?;
+        vertex_normals(mesh.vertices, mesh.faces, Weighting::Angle, &mut n, stop)?;
         computed = n;
         &computed
     };
     if options.shading == Shading::Gouraud {
-        pass.gouraud(normals, image)
+        pass.gouraud(normals, image, stop)
     } else {
-        pass.phong(normals, image)
+        pass.phong(normals, image, stop)
     }
 }
 
@@ -260,6 +292,7 @@ pub fn render<T: Real>(
 mod tests {
     use super::*;
     use crate::material::Material;
+    use crate::scene::Scene;
 
     fn emission_scene() -> Scene {
         Scene {
@@ -288,12 +321,13 @@ mod tests {
         let mut image = vec![0.0; width * height * 4];
         let mut depth = vec![0.0; width * height];
         render(
-            &emission_scene(),
+            &emission_scene().validated().unwrap(),
             mesh,
             &Camera::default(),
             options,
             &mut image,
             &mut depth,
+            &Stop::new(),
         )?;
         Ok((image, depth))
     }
@@ -357,6 +391,47 @@ mod tests {
     }
 
     #[test]
+    fn every_pass_sees_a_requested_stop() {
+        // `render` itself stops at its first check; each later pass must stop on its own.
+        let (stop, viewport) = (
+            Stop::new(),
+            Viewport {
+                width: 7,
+                height: 5,
+            },
+        );
+        let to_clip = DMat4::IDENTITY;
+        let triangles = setup(&quad(), to_clip, viewport, Cull::None, &stop).unwrap();
+        let mut ids = vec![0; 35];
+        let mut depth = vec![0.0_f64; 35];
+        visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap();
+        stop.request();
+        let interrupted = |e: Error| e.kind == crate::error::ErrorKind::Interrupted;
+        assert!(interrupted(
+            setup(&quad(), to_clip, viewport, Cull::None, &stop).unwrap_err()
+        ));
+        let err = visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap_err();
+        assert!(interrupted(err));
+        let scene = emission_scene().validated().unwrap();
+        let pass = Pass {
+            scene: &scene,
+            mesh: &quad(),
+            options: ShadeOptions::default(),
+            frame: Frame::new(viewport, &triangles, &ids).unwrap(),
+            background: [0.0; 4],
+        };
+        let normals = [[0.0, 0.0, 1.0]; 4];
+        let mut image = vec![0.0; 35 * 4];
+        assert!(interrupted(pass.flat(&mut image, &stop).unwrap_err()));
+        assert!(interrupted(
+            pass.gouraud(&normals, &mut image, &stop).unwrap_err()
+        ));
+        assert!(interrupted(
+            pass.phong(&normals, &mut image, &stop).unwrap_err()
+        ));
+    }
+
+    #[test]
     fn gouraud_colours_stay_in_the_unit_interval() {
         // White vertices: the interpolation weights of a pixel may sum to 1 + ulp.
         let scene = Scene {
@@ -391,12 +466,13 @@ mod tests {
         let mut image = vec![0.0; width * height * 4];
         let mut depth = vec![0.0; width * height];
         render(
-            &scene,
+            &scene.validated().unwrap(),
             &mesh,
             &Camera::default(),
             &options,
             &mut image,
             &mut depth,
+            &Stop::new(),
         )
         .unwrap();
         assert!(depth.iter().any(|&z| z < 1.0));

@@ -1,6 +1,8 @@
 //! Everything the lighting equation reads besides the vertices: the lights, the front and back
 //! materials and the light model (GL 2.1 §2.14.1, `glLightModel`).
 
+use std::ops::Deref;
+
 use crate::error::Error;
 use crate::light::Light;
 use crate::material::Material;
@@ -124,6 +126,35 @@ impl Scene {
         }
         Ok(())
     }
+
+    /// The scene, checked once by [`Scene::validate`]: what `shade` and `render` take, so a
+    /// scene reused over many calls is not checked again on each.
+    ///
+    /// # Errors
+    /// Those of [`Scene::validate`].
+    pub fn validated(self) -> Result<ValidScene, Error> {
+        self.validate()?;
+        Ok(ValidScene(self))
+    }
+}
+
+/// A [`Scene`] that passed [`Scene::validate`], made only by [`Scene::validated`]; it reads as
+/// the scene through `Deref` and cannot be changed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ValidScene(Scene);
+
+impl ValidScene {
+    /// The validated scene.
+    pub fn scene(&self) -> &Scene {
+        &self.0
+    }
+}
+
+impl Deref for ValidScene {
+    type Target = Scene;
+    fn deref(&self) -> &Scene {
+        &self.0
+    }
 }
 
 impl Scene {
@@ -185,9 +216,16 @@ mod tests {
             ..Scene::default()
         };
         assert!(s.validate().unwrap_err().message.contains("light 1"));
+        assert_eq!(
+            s.clone().validated().unwrap_err(),
+            s.validate().unwrap_err()
+        );
         s.lights.clear();
         s.viewer = [0.0; 4];
         assert!(s.validate().unwrap_err().message.starts_with("viewer"));
         assert!(Specular::parse("cook-torrance").is_err());
+        let valid = Scene::default().validated().unwrap();
+        assert_eq!(valid.scene(), &Scene::default());
+        assert_eq!(valid.output_count(), 1);
     }
 }

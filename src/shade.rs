@@ -9,20 +9,45 @@ use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
+use crate::alloc::try_with_capacity;
 use crate::dispatch::{InstructionSet, Isa, LaneWork};
 use crate::error::Error;
 use crate::kernel::{Block, Kernel};
 use crate::lanes::{Lanes, MAX_LANES, V3};
+use crate::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
-use crate::scene::Scene;
+use crate::scene::{Scene, ValidScene};
+use crate::stop::Stop;
 
 pub use crate::kernel::VertexColors;
 
 /// Rows per parallel task: enough work to amortise rayon's scheduling for one light, few enough
 /// that a 10^4-row call still spreads over every core.
 const ROWS_PER_TASK: usize = 8192;
+
+/// Values per slab of Exact mode's serial widening and narrowing, between polls of the stop:
+/// well under a millisecond each.
+const WIDEN_SLAB: usize = 1 << 16;
+
+/// `convert` of every item, slab by slab, polling `stop` between slabs.
+///
+/// # Errors
+/// A memory error naming `what`, or [`Error::interrupted`].
+fn widened<X: Copy, Y>(
+    items: &[X],
+    convert: impl Fn(&X) -> Y,
+    stop: &Stop,
+    what: &str,
+) -> Result<Vec<Y>, Error> {
+    let mut wide = try_with_capacity(items.len(), what)?;
+    for slab in items.chunks(WIDEN_SLAB) {
+        stop.check()?;
+        wide.extend(slab.iter().map(&convert));
+    }
+    Ok(wide)
+}
 
 /// The arrays of one call.
 #[derive(Clone, Copy)]
@@ -189,18 +214,32 @@ fn check_arrays<T: Real>(
 /// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
 /// [`Accuracy::Exact`] in `f64` whatever `T` is.
 ///
+/// `stop` is polled before every task of [`ROWS_PER_TASK`] rows; once it is requested the
+/// remaining tasks are skipped and `out` is left partly written.
+///
 /// # Errors
-/// A value error for an invalid scene or modelview, mismatched lengths, colours without
-/// `color_material` (or the reverse), or an `out` of the wrong length.
+/// A value error for an invalid modelview or options, mismatched lengths, colours without
+/// `color_material` (or the reverse), or an `out` of the wrong length; a memory error when a
+/// scratch buffer cannot be allocated; [`Error::interrupted`] when `stop` was requested before
+/// the call finished.
 pub fn shade<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
     options: &ShadeOptions,
     out: &mut [T],
+    stop: &Stop,
 ) -> Result<(), Error> {
-    shade_uninit(scene, positions, normals, colors, options, as_uninit(out))
+    shade_uninit(
+        scene,
+        positions,
+        normals,
+        colors,
+        options,
+        as_uninit(out),
+        stop,
+    )
 }
 
 /// `out` as memory that may be written, not read: [`shade_uninit`] writes every element of
@@ -212,24 +251,25 @@ pub(crate) fn as_uninit<T>(out: &mut [T]) -> &mut [MaybeUninit<T>] {
 }
 
 /// [`shade`] into memory that need not be initialised (a fresh numpy array): every element
-/// of `out` is written when this returns `Ok`, none is read.
+/// of `out` is written when this returns `Ok`, none is read (on `Err`, some may be unwritten).
 ///
 /// # Errors
 /// As [`shade`].
 pub fn shade_uninit<T: Real>(
-    scene: &Scene,
+    scene: &ValidScene,
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
     options: &ShadeOptions,
     out: &mut [MaybeUninit<T>],
+    stop: &Stop,
 ) -> Result<(), Error> {
     check_arrays(scene, positions, normals, colors, options, out.len())?;
     let widen = options.accuracy == Accuracy::Exact && std::mem::size_of::<T>() < 8;
     if !widen {
         let prepared = Prepared::<T>::new(scene, options)?;
         let plan = Plan::new(&prepared);
-        run(
+        return run(
             &prepared,
             &plan,
             Isa::detect(),
@@ -237,41 +277,53 @@ pub fn shade_uninit<T: Real>(
             normals,
             colors,
             out,
+            stop,
         );
-        return Ok(());
     }
     let prepared = Prepared::<f64>::new(scene, options)?;
     let plan = Plan::new(&prepared);
-    let wide =
-        |rows: &[[T; 3]]| -> Vec<[f64; 3]> { rows.iter().map(|r| r.map(T::to_f64)).collect() };
-    let data: Vec<f64> =
-        colors.map_or_else(Vec::new, |c| c.data.iter().map(|x| x.to_f64()).collect());
+    let row = |r: &[T; 3]| r.map(T::to_f64);
+    let data = match colors {
+        Some(c) => widened(c.data, |x: &T| x.to_f64(), stop, "the colors in float64")?,
+        None => Vec::new(),
+    };
     let colors = colors.map(|c| VertexColors {
         data: &data[..],
         width: c.width,
     });
-    let mut result = vec![0.0; out.len()];
+    // Unread unless a light is positional or the viewer local: no copy then.
     let positions = if plan.positions {
-        wide(positions)
+        widened(positions, row, stop, "the positions in float64")?
     } else {
-        vec![[0.0; 3]; positions.len()]
+        Vec::new()
     };
+    let normals = widened(normals, row, stop, "the normals in float64")?;
+    // Zeroed: a large buffer is mapped, not written, before the kernel writes every value.
+    let mut result = Zeroed::<f64>::new(out.len(), "the float64 colours")?;
     run(
         &prepared,
         &plan,
         Isa::detect(),
         &positions,
-        &wide(normals),
+        &normals,
         colors,
         as_uninit(&mut result),
-    );
-    for (d, s) in out.iter_mut().zip(result) {
-        d.write(T::from_f64(s));
+        stop,
+    )?;
+    for (d, s) in out.chunks_mut(WIDEN_SLAB).zip(result.chunks(WIDEN_SLAB)) {
+        stop.check()?;
+        for (d, &s) in d.iter_mut().zip(s) {
+            d.write(T::from_f64(s));
+        }
     }
     Ok(())
 }
 
-/// Runs the kernel of `prepared` and `plan` over every row with instruction set `isa`.
+/// Runs the kernel of `prepared` and `plan` over every row with instruction set `isa`,
+/// skipping the tasks that start after `stop` is requested.
+///
+/// # Errors
+/// A memory error for the task list, or [`Error::interrupted`].
 pub(crate) fn run<T: Real>(
     prepared: &Prepared<T>,
     plan: &Plan,
@@ -280,10 +332,11 @@ pub(crate) fn run<T: Real>(
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
     out: &mut [MaybeUninit<T>],
-) {
+    stop: &Stop,
+) -> Result<(), Error> {
     let n = normals.len();
     if n == 0 {
-        return;
+        return stop.check();
     }
     let kernel = Kernel { prepared, plan };
     let inputs = Inputs {
@@ -292,14 +345,20 @@ pub(crate) fn run<T: Real>(
         colors,
     };
     // Regroup the planes chunk by chunk, so each task owns the same rows of every plane.
-    let mut tasks: Vec<Vec<&mut [MaybeUninit<T>]>> =
-        (0..n.div_ceil(ROWS_PER_TASK)).map(|_| Vec::new()).collect();
+    let (count, planes) = (n.div_ceil(ROWS_PER_TASK), out.len() / (n * 4));
+    let mut tasks: Vec<Vec<&mut [MaybeUninit<T>]>> = try_with_capacity(count, "the task list")?;
+    for _ in 0..count {
+        tasks.push(try_with_capacity(planes, "the task list")?);
+    }
     for plane in out.chunks_mut(n * 4) {
         for (task, rows) in tasks.iter_mut().zip(plane.chunks_mut(ROWS_PER_TASK * 4)) {
             task.push(rows);
         }
     }
     let work = |(t, mut planes): (usize, Vec<&mut [MaybeUninit<T>]>)| {
+        if stop.is_requested() {
+            return;
+        }
         let task = Task {
             kernel: &kernel,
             inputs,
@@ -313,6 +372,7 @@ pub(crate) fn run<T: Real>(
     } else {
         tasks.into_par_iter().enumerate().for_each(work);
     }
+    stop.check()
 }
 
 /// The one-line description of what `shade` computes for `scene` and `options` in `T`: the
@@ -320,7 +380,7 @@ pub(crate) fn run<T: Real>(
 ///
 /// # Errors
 /// As [`shade`] for an invalid scene or options.
-pub fn describe<T: Real>(scene: &Scene, options: &ShadeOptions) -> Result<String, Error> {
+pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
     let (bytes, lanes, plan) = if exact || std::mem::size_of::<T>() == 8 {
@@ -349,7 +409,8 @@ mod tests {
 
     fn shade_one<T: Real>(scene: &Scene, p: [T; 3], n: [T; 3], options: &ShadeOptions) -> Vec<T> {
         let mut out = vec![T::ZERO; scene.output_count() * 4];
-        shade(scene, &[p], &[n], None, options, &mut out).unwrap();
+        let scene = scene.clone().validated().unwrap();
+        shade(&scene, &[p], &[n], None, options, &mut out, &Stop::new()).unwrap();
         out
     }
 
@@ -453,7 +514,17 @@ mod tests {
     fn shade_rows(scene: &Scene, positions: &[[f32; 3]], normals: &[[f32; 3]]) -> Vec<f32> {
         let mut out = vec![0.0_f32; positions.len() * 4];
         let options = ShadeOptions::default();
-        shade(scene, positions, normals, None, &options, &mut out).unwrap();
+        let scene = scene.clone().validated().unwrap();
+        shade(
+            &scene,
+            positions,
+            normals,
+            None,
+            &options,
+            &mut out,
+            &Stop::new(),
+        )
+        .unwrap();
         out
     }
 
@@ -479,7 +550,7 @@ mod tests {
 
     #[test]
     fn color_material_replaces_the_tracked_parameters() {
-        let scene = headlight_scene();
+        let scene = headlight_scene().validated().unwrap();
         let options = ShadeOptions {
             color_material: Some(ColorMaterial::parse("diffuse", "front_and_back").unwrap()),
             ..ShadeOptions::default()
@@ -496,6 +567,7 @@ mod tests {
             Some(colors),
             &options,
             &mut out,
+            &Stop::new(),
         )
         .unwrap();
         assert!(close(&out, &[0.54, 0.29, 1.0, 0.5]), "{out:?}");
@@ -505,12 +577,13 @@ mod tests {
     fn mismatched_lengths_are_rejected() {
         let mut out = vec![0.0; 8];
         let err = shade::<f64>(
-            &headlight_scene(),
+            &headlight_scene().validated().unwrap(),
             &[[0.0; 3]; 2],
             &[[0.0; 3]],
             None,
             &ShadeOptions::default(),
             &mut out,
+            &Stop::new(),
         )
         .unwrap_err();
         assert!(err.message.starts_with("normals"));
@@ -535,7 +608,9 @@ mod tests {
             },
             viewer: [0.0, 0.0, 0.0, 1.0],
             ..Scene::default()
-        };
+        }
+        .validated()
+        .unwrap();
         let n = 5000;
         let positions: Vec<[f32; 3]> = (0..n)
             .map(|i| {
@@ -563,6 +638,7 @@ mod tests {
                     None,
                     &ShadeOptions::default(),
                     &mut out,
+                    &Stop::new(),
                 )
                 .unwrap();
             });

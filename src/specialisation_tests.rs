@@ -16,6 +16,7 @@ use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run, VertexColors};
+use crate::stop::Stop;
 
 const FEATURES: u32 = 14;
 
@@ -169,6 +170,7 @@ fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
 /// The output bits of `plan` (new or general) on `isa`.
 fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
     let (scene, options) = scene_of(bits);
+    let scene = scene.validated().unwrap();
     let (positions, normals, colors) = vertices::<T>();
     let prepared = Prepared::<T>::new(&scene, &options).unwrap();
     let plan = if general {
@@ -189,7 +191,9 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
         &normals,
         colors,
         as_uninit(&mut out),
-    );
+        &Stop::new(),
+    )
+    .unwrap();
     out.iter().map(|x| x.to_f64().to_bits()).collect()
 }
 
@@ -227,7 +231,7 @@ fn the_subsets_reach_every_plan_flag() {
     let plans: Vec<Plan> = (0..1 << FEATURES)
         .map(|bits| {
             let (scene, options) = scene_of(bits);
-            Plan::new(&Prepared::<f32>::new(&scene, &options).unwrap())
+            Plan::new(&Prepared::<f32>::new(&scene.validated().unwrap(), &options).unwrap())
         })
         .collect();
     let both = |f: &dyn Fn(&Plan) -> bool| plans.iter().any(f) && !plans.iter().all(f);

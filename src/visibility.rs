@@ -7,8 +7,11 @@
 
 use rayon::prelude::*;
 
+use crate::alloc::{try_collect, try_filled};
+use crate::error::Error;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
+use crate::stop::Stop;
 
 /// The triangle id of a pixel no triangle covers.
 pub const NO_TRIANGLE: u32 = u32::MAX;
@@ -35,9 +38,9 @@ impl Triangles {
         &self.chunks[(id >> CHUNK_BITS) as usize][(id & ((1 << CHUNK_BITS) - 1)) as usize]
     }
 
-    /// Every triangle with its id, in order.
-    fn iter(&self) -> impl Iterator<Item = (u32, &Triangle)> {
-        self.chunks.iter().enumerate().flat_map(|(c, chunk)| {
+    /// The triangles of every chunk with their ids, chunk by chunk in order.
+    fn chunks(&self) -> impl Iterator<Item = impl Iterator<Item = (u32, &Triangle)>> {
+        self.chunks.iter().enumerate().map(|(c, chunk)| {
             let base = (c as u32) << CHUNK_BITS;
             chunk
                 .iter()
@@ -60,57 +63,84 @@ pub fn window_row(viewport: Viewport, row: usize) -> usize {
 }
 
 /// The triangles of each band of image rows, as ids in submission order: `(starts, ids)` with
-/// band b's triangles at `ids[starts[b]..starts[b + 1]]`.
-fn bin(triangles: &Triangles, viewport: Viewport) -> (Vec<usize>, Vec<u32>) {
+/// band b's triangles at `ids[starts[b]..starts[b + 1]]`. Sequential: `stop` is polled per
+/// chunk of triangles.
+///
+/// # Errors
+/// A memory error for the bins, or [`Error::interrupted`].
+fn bin(
+    triangles: &Triangles,
+    viewport: Viewport,
+    stop: &Stop,
+) -> Result<(Vec<usize>, Vec<u32>), Error> {
     let bands = viewport.height.div_ceil(BAND_ROWS);
     let band_range = |t: &Triangle| {
         let (y0, y1) = t.rows();
         let (top, bottom) = (window_row(viewport, y1), window_row(viewport, y0));
         top / BAND_ROWS..=bottom / BAND_ROWS
     };
-    let mut starts = vec![0; bands + 1];
-    for (_, t) in triangles.iter() {
-        for b in band_range(t) {
-            starts[b + 1] += 1;
+    let mut starts = try_filled(bands + 1, 0, "the band starts")?;
+    for chunk in triangles.chunks() {
+        stop.check()?;
+        for (_, t) in chunk {
+            for b in band_range(t) {
+                starts[b + 1] += 1;
+            }
         }
     }
     for b in 0..bands {
         starts[b + 1] += starts[b];
     }
-    let mut fill = starts.clone();
-    let mut ids = vec![0; starts[bands]];
-    for (id, t) in triangles.iter() {
-        for b in band_range(t) {
-            ids[fill[b]] = id;
-            fill[b] += 1;
+    let mut fill = try_collect(starts.iter().copied(), "the band cursors")?;
+    let mut ids = try_filled(starts[bands], 0, "the binned triangles")?;
+    for chunk in triangles.chunks() {
+        stop.check()?;
+        for (id, t) in chunk {
+            for b in band_range(t) {
+                ids[fill[b]] = id;
+                fill[b] += 1;
+            }
         }
     }
-    (starts, ids)
+    Ok((starts, ids))
 }
 
 /// Fills `ids` (a triangle id per pixel, image rows top-down, [`NO_TRIANGLE`] where nothing is
-/// drawn) and `depth` (window depth, 1 where nothing is drawn) from `triangles`.
+/// drawn) and `depth` (window depth, 1 where nothing is drawn) from `triangles`. `stop` is
+/// polled per band and per triangle drawn in it, since one band may draw every triangle.
+///
+/// # Errors
+/// A memory error for the bins, or [`Error::interrupted`] when `stop` was requested before
+/// the pass finished.
 pub fn visibility<T: Real>(
     triangles: &Triangles,
     viewport: Viewport,
     ids: &mut [u32],
     depth: &mut [T],
-) {
+    stop: &Stop,
+) -> Result<(), Error> {
     let width = viewport.width;
-    ids.fill(NO_TRIANGLE);
-    depth.fill(T::ONE);
-    let (starts, binned) = bin(triangles, viewport);
+    let (starts, binned) = bin(triangles, viewport, stop)?;
     let band = BAND_ROWS * width;
     ids.par_chunks_mut(band)
         .zip(depth.par_chunks_mut(band))
         .enumerate()
         .for_each(|(b, (ids, depth))| {
+            if stop.is_requested() {
+                return;
+            }
+            // Cleared band by band: in parallel, and between polls.
+            ids.fill(NO_TRIANGLE);
+            depth.fill(T::ONE);
             let first_row = b * BAND_ROWS;
             let rows = ids.len() / width;
             // Window rows of this band, bottom-up: the image rows run the other way.
             let lowest = window_row(viewport, first_row + rows - 1);
             let highest = window_row(viewport, first_row);
             for &id in &binned[starts[b]..starts[b + 1]] {
+                if stop.is_requested() {
+                    return;
+                }
                 let t = triangles.get(id);
                 let (y0, y1) = t.rows();
                 for y in y0.max(lowest)..=y1.min(highest) {
@@ -126,6 +156,7 @@ pub fn visibility<T: Real>(
                 }
             }
         });
+    stop.check()
 }
 
 #[cfg(test)]
@@ -172,7 +203,7 @@ mod tests {
         };
         let mut ids = vec![0; 40 * 37];
         let mut depth = vec![0.0_f32; 40 * 37];
-        visibility(&triangles, viewport, &mut ids, &mut depth);
+        visibility(&triangles, viewport, &mut ids, &mut depth, &Stop::new()).unwrap();
         assert!(ids.iter().all(|&i| i == 1 << CHUNK_BITS));
         assert_eq!(triangles.get(1 << CHUNK_BITS).face, 1);
         assert!(depth.iter().all(|&z| z == 0.25));
@@ -186,7 +217,14 @@ mod tests {
         };
         let mut ids = vec![0; 60];
         let mut depth = vec![0.0_f64; 60];
-        visibility(&Triangles::default(), viewport, &mut ids, &mut depth);
+        visibility(
+            &Triangles::default(),
+            viewport,
+            &mut ids,
+            &mut depth,
+            &Stop::new(),
+        )
+        .unwrap();
         assert!(ids.iter().all(|&i| i == NO_TRIANGLE));
         assert!(depth.iter().all(|&z| z == 1.0));
     }
