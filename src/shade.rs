@@ -379,7 +379,7 @@ pub(crate) fn run<T: Real>(
 /// arithmetic, the instruction set and the [`Plan`].
 ///
 /// # Errors
-/// As [`shade`] for an invalid scene or options.
+/// As [`shade`] for invalid options.
 pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
