@@ -5,6 +5,7 @@ power-of-two scaling without attenuation, and two-sided symmetry."""
 
 from __future__ import annotations
 
+import inspect
 from typing import Any
 
 import numpy as np
@@ -13,6 +14,12 @@ from hypothesis import strategies as st
 from hypothesis.extra import numpy as hnp
 
 import glshade as gs
+
+
+def rebuilt(lights: gs.Lights, **changes: Any) -> gs.Lights:
+    """`lights` with the parameters in `changes` replaced."""
+    names = inspect.signature(gs.Light).parameters
+    return gs.Lights(**{name: changes.get(name, getattr(lights, name)) for name in names})
 
 DTYPES = st.sampled_from([np.float32, np.float64])
 
@@ -114,10 +121,11 @@ def test_power_of_two_scaling_without_attenuation_changes_no_bit(
 ) -> None:
     # Scale positions, point lights and the viewer point by 2^k: every direction is unchanged
     # bit for bit, and without attenuation nothing else depends on distance.
-    lights = scene.lights.table.copy()
-    lights[:, 21:24] = (1.0, 0.0, 0.0)  # constant_attenuation, linear, quadratic
-    scaled_lights = lights.copy()
-    scaled_lights[:, 0:3] *= np.where(lights[:, 3:4] != 0, 2.0**k, 1.0)
+    unattenuated = {"constant_attenuation": 1.0, "linear_attenuation": 0.0}
+    lights = rebuilt(scene.lights, **unattenuated, quadratic_attenuation=0.0)
+    position = lights.position.copy()
+    position[:, 0:3] *= np.where(position[:, 3:4] != 0, 2.0**k, 1.0)
+    scaled_lights = rebuilt(lights, position=position)
     viewer = scene.viewer.copy()
     scaled_viewer = viewer.copy()
     if viewer[3] != 0:
@@ -128,8 +136,8 @@ def test_power_of_two_scaling_without_attenuation_changes_no_bit(
         "separate_specular": scene.separate_specular,
         "specular": scene.specular,
     }
-    base = gs.Scene(lights=gs.Lights._from_table(lights), viewer=viewer, **kwargs)
-    moved = gs.Scene(lights=gs.Lights._from_table(scaled_lights), viewer=scaled_viewer, **kwargs)
+    base = gs.Scene(lights=lights, viewer=viewer, **kwargs)
+    moved = gs.Scene(lights=scaled_lights, viewer=scaled_viewer, **kwargs)
     p = p.astype(dtype)
     nrm = nrm.astype(dtype)
     np.testing.assert_array_equal(
@@ -188,13 +196,13 @@ def test_mirroring_the_scene_changes_no_bit(
     # viewer) negates both factors of every product in every dot product: the same bits.
     flip = np.ones(3)
     flip[axis] = -1.0
-    lights = scene.lights.table.copy()
-    lights[:, 0:3] *= flip  # position xyz
-    lights[:, 16:19] *= flip  # spot direction
+    lights = scene.lights
+    position = lights.position * np.r_[flip, 1.0]
+    lights = rebuilt(lights, position=position, spot_direction=lights.spot_direction * flip)
     viewer = scene.viewer.copy()
     viewer[:3] *= flip
     mirrored = gs.Scene(
-        lights=gs.Lights._from_table(lights),
+        lights=lights,
         material=scene.material,
         viewer=viewer,
         two_side=scene.two_side,

@@ -9,7 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import _glshade
-from ._arrays import matrix
+from ._intake import matrix, number, real
 
 __all__ = ["Camera"]
 
@@ -25,13 +25,22 @@ def _matrix(value: ArrayLike | None, name: str) -> Float64Array:
     return m
 
 
-def _point(value: ArrayLike, name: str) -> Float64Array:
-    p = np.asarray(value)
-    if p.dtype.kind not in "fiu":
-        raise TypeError(f"{name} must be real numbers, got dtype {p.dtype}")
+def _point(value: ArrayLike, name: str) -> tuple[float, float, float]:
+    p = real(value, name)
     if p.shape != (3,):
-        raise ValueError(f"{name} must have shape (3,), got {p.shape}")
-    return np.ascontiguousarray(p, dtype=np.float64)
+        raise ValueError(f"{name} must have shape (3,), got shape {p.shape}")
+    x, y, z = p.tolist()
+    return (x, y, z)
+
+
+def _aspect(value: float | None) -> float | None:
+    """None, or a finite aspect ratio > 0."""
+    if value is None:
+        return None
+    a = number(value, "aspect")
+    if not 0 < a < np.inf:
+        raise ValueError(f"aspect must be finite and > 0, got {a:g}")
+    return a
 
 
 class Camera:
@@ -113,10 +122,11 @@ class Camera:
             For ``eye == target``, `up` parallel to the view, or out-of-range parameters.
         """
         view = _glshade.look_at(_point(eye, "eye"), _point(target, "target"), _point(up, "up"))
-        f, n, z = float(fovy), float(near), float(far)
+        f, n, z = number(fovy, "fovy"), number(near, "near"), number(far, "far")
+        fixed = _aspect(aspect)
         return cls._built(
             view,
-            lambda a: _glshade.perspective(f, a if aspect is None else float(aspect), n, z),
+            lambda a: _glshade.perspective(f, a if fixed is None else fixed, n, z),
             f"look_at(fovy={f:g}, aspect={aspect}, near={n:g}, far={z:g})",
         )
 
@@ -152,10 +162,13 @@ class Camera:
         Camera
         """
         view = _glshade.look_at(_point(eye, "eye"), _point(target, "target"), _point(up, "up"))
-        h, n, z = float(height), float(near), float(far)
+        h, n, z = number(height, "height"), number(near, "near"), number(far, "far")
+        if not 0 < h < np.inf:
+            raise ValueError(f"height must be finite and > 0, got {h:g}")
+        fixed = _aspect(aspect)
 
         def projection(a: float) -> Float64Array:
-            half_width = 0.5 * h * (a if aspect is None else float(aspect))
+            half_width = 0.5 * h * (a if fixed is None else fixed)
             return _glshade.orthographic(-half_width, half_width, -0.5 * h, 0.5 * h, n, z)
 
         return cls._built(

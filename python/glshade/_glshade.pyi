@@ -1,22 +1,19 @@
-"""Type stub of the native module. Use the `glshade` package: it coerces the arguments."""
+"""Type stub of the native module. Use the `glshade` package: its intake prepares the arrays."""
 
-from typing import Any
+from typing import Any, final
 
 import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
-    "LIGHT_LAYOUT",
-    "MATERIAL_LAYOUT",
+    "Lights",
+    "Material",
+    "Scene",
     "__version__",
-    "check_lights",
-    "check_material",
-    "check_scene",
     "describe",
     "face_normals",
     "look_at",
     "orthographic",
-    "output_names",
     "perspective",
     "render",
     "shade",
@@ -24,33 +21,52 @@ __all__ = [
 ]
 
 __version__: str
-LIGHT_LAYOUT: list[tuple[str, int]]
-MATERIAL_LAYOUT: list[tuple[str, int]]
 
-def check_lights(lights: NDArray[np.float64]) -> None: ...
-def check_material(material: NDArray[np.float64], name: str) -> None: ...
-def check_scene(
-    lights: NDArray[np.float64],
-    material: NDArray[np.float64],
-    back_material: NDArray[np.float64],
-    global_ambient: NDArray[np.float64],
-    viewer: NDArray[np.float64],
-    specular: str,
-    specular_gate: bool,
-) -> None: ...
-def output_names(two_side: bool, separate_specular: bool) -> list[str]: ...
+@final
+class Lights:
+    PARAMETERS: list[str]
+    DEFAULTS: dict[str, Any]
+    def __new__(
+        cls, parameters: list[NDArray[np.float64]], count: int | None = None
+    ) -> Lights: ...
+    def __len__(self) -> int: ...
+    def column(self, name: str) -> NDArray[np.float64]: ...
+    def take(self, indices: list[int]) -> Lights: ...
+    @staticmethod
+    def concatenate(parts: list[Lights]) -> Lights: ...
+    def __getnewargs__(self) -> tuple[list[NDArray[np.float64]], int]: ...
+
+@final
+class Material:
+    PARAMETERS: list[str]
+    DEFAULTS: dict[str, Any]
+    def __new__(cls, parameters: list[NDArray[np.float64]]) -> Material: ...
+    def get(self, name: str) -> Any: ...
+    def __getnewargs__(self) -> tuple[list[Any]]: ...
+
+@final
+class Scene:
+    DEFAULTS: dict[str, Any]
+    def __new__(
+        cls,
+        lights: Lights,
+        material: Material,
+        back_material: Material | None,
+        global_ambient: tuple[float, float, float, float],
+        viewer: tuple[float, ...],
+        two_side: bool,
+        separate_specular: bool,
+        specular: str,
+        specular_gate: bool,
+    ) -> Scene: ...
+    @property
+    def outputs(self) -> list[str]: ...
+    def __getnewargs__(self) -> tuple[Any, ...]: ...
+
 def shade(
     positions: NDArray[np.floating[Any]],
     normals: NDArray[np.floating[Any]],
-    lights: NDArray[np.float64],
-    material: NDArray[np.float64],
-    back_material: NDArray[np.float64],
-    global_ambient: NDArray[np.float64],
-    viewer: NDArray[np.float64],
-    two_side: bool,
-    separate_specular: bool,
-    specular: str,
-    specular_gate: bool,
+    scene: Scene,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,
@@ -62,15 +78,7 @@ def shade(
     out: NDArray[np.floating[Any]] | None,
 ) -> NDArray[np.floating[Any]]: ...
 def describe(
-    lights: NDArray[np.float64],
-    material: NDArray[np.float64],
-    back_material: NDArray[np.float64],
-    global_ambient: NDArray[np.float64],
-    viewer: NDArray[np.float64],
-    two_side: bool,
-    separate_specular: bool,
-    specular: str,
-    specular_gate: bool,
+    scene: Scene,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,
@@ -87,7 +95,9 @@ def vertex_normals(
     vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64], weighting: str
 ) -> NDArray[np.floating[Any]]: ...
 def look_at(
-    eye: NDArray[np.float64], target: NDArray[np.float64], up: NDArray[np.float64]
+    eye: tuple[float, float, float],
+    target: tuple[float, float, float],
+    up: tuple[float, float, float],
 ) -> NDArray[np.float64]: ...
 def perspective(fovy: float, aspect: float, near: float, far: float) -> NDArray[np.float64]: ...
 def orthographic(
@@ -96,15 +106,7 @@ def orthographic(
 def render(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],
-    lights: NDArray[np.float64],
-    material: NDArray[np.float64],
-    back_material: NDArray[np.float64],
-    global_ambient: NDArray[np.float64],
-    viewer: NDArray[np.float64],
-    two_side: bool,
-    separate_specular: bool,
-    specular: str,
-    specular_gate: bool,
+    scene: Scene,
     view: NDArray[np.float64],
     projection: NDArray[np.float64],
     model: NDArray[np.float64],

@@ -7,7 +7,7 @@ from typing import Any, Literal
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, float_dtype, indices, rows
+from ._intake import FloatArray, indices, rows
 
 __all__ = ["face_normals", "vertex_normals"]
 
@@ -24,8 +24,7 @@ def _mesh(vertices: Any, faces: ArrayLike | None) -> tuple[FloatArray, Any]:
                 f"got {type(vertices)!r}"
             )
         vertices, faces = vertices.vertices, vertices.faces
-    v = rows(vertices, "vertices", float_dtype(vertices, "vertices"))
-    return v, indices(faces, "faces")
+    return rows(vertices, "vertices"), indices(faces, "faces")
 
 
 def face_normals(vertices: Any, faces: ArrayLike | None = None) -> FloatArray:

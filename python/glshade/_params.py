@@ -8,15 +8,14 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._intake import real
+
 Float64Array = NDArray[np.float64]
 
 
 def real_array(value: ArrayLike, name: str) -> Float64Array:
-    """`value` as a finite float64 array; TypeError for non-numbers, ValueError for NaN or inf."""
-    a = np.asarray(value)
-    if a.dtype.kind not in "fiu" or a.dtype == np.bool_:
-        raise TypeError(f"{name} must be real numbers, got {value!r} (dtype {a.dtype})")
-    a = a.astype(np.float64)
+    """`value` as a finite float64 array (the intake's rule); ValueError for NaN or inf."""
+    a = real(value, name)
     if not np.isfinite(a).all():
         raise ValueError(f"{name} must be finite, got {value!r}")
     return a

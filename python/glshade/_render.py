@@ -9,8 +9,8 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, rows
 from ._camera import Camera, _matrix
+from ._intake import FloatArray, choice, flag, integer, optional_choice, rows
 from ._normals import _mesh
 from ._png import encode_png, write_png
 from ._scene import Scene, _rgba
@@ -74,18 +74,8 @@ def _plain_unless_image(value: Any) -> Any:
     return value
 
 
-def _size(value: int, name: str) -> int:
-    if isinstance(value, bool) or not isinstance(value, int | np.integer):
-        raise TypeError(f"{name} must be an integer, got {value!r}")
-    if value < 1:
-        raise ValueError(f"{name} must be positive, got {value}")
-    return int(value)
-
-
-def _name(value: object, name: str) -> str:
-    if not isinstance(value, str):
-        raise TypeError(f"{name} must be a string, got {value!r}")
-    return value
+# GL_MAX_VIEWPORT_DIMS of common drivers; the core checks the same bound.
+_MAX_SIZE = 16384
 
 
 @overload
@@ -247,35 +237,28 @@ def render(
     n = None if normals is None else rows(normals, "normals", v.dtype)
     c = None
     if colors is not None:
-        c = rows(colors, "colors", v.dtype, width="3 or 4")
+        c = rows(colors, "colors", v.dtype, (3, 4))
         color_material = color_material or "ambient_and_diffuse"
-    for name, value in (
-        ("shading", shading),
-        ("color_material_face", color_material_face),
-        ("cull", "none" if cull is None else cull),
-    ):
-        _name(value, name)
-    if color_material is not None:
-        _name(color_material, "color_material")
-    w, h = _size(width, "width"), _size(height, "height")
+    w = integer(width, "width", 1, _MAX_SIZE)
+    h = integer(height, "height", 1, _MAX_SIZE)
     image, z = _glshade.render(
         v,
         f,
-        *scene._native(),
+        scene._native,
         camera.view,
         camera.projection_matrix(w, h),
         _matrix(model, "model"),
         w,
         h,
-        shading,
+        choice(shading, "shading"),
         n,
         c,
-        color_material,
-        color_material_face,
-        bool(normalize),
-        bool(rescale_normal),
-        "none" if cull is None else cull,
-        _rgba(background, "background"),
+        optional_choice(color_material, "color_material"),
+        choice(color_material_face, "color_material_face"),
+        flag(normalize, "normalize"),
+        flag(rescale_normal, "rescale_normal"),
+        "none" if cull is None else choice(cull, "cull"),
+        np.array(_rgba(background, "background")),
     )
     result = image.view(Image)
     return (result, z) if depth else result

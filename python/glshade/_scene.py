@@ -1,61 +1,34 @@
 """OpenGL lighting state as Python objects: lights, materials and the light model.
 
-Each object packs itself into the float64 row layout the native module reads
-(``_glshade.LIGHT_LAYOUT`` and ``_glshade.MATERIAL_LAYOUT``) and is checked by the same Rust code
-that shades, so a bad parameter is reported when the object is built.
+Each object holds its native counterpart (``glshade._glshade.Lights``, ``Material``, ``Scene``),
+checked once, by the Rust code that shades, when it is built; `shade` and `render` hand that
+object to the core as it is. GL's defaults are the core's, read from the native classes.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any, Literal, TypeVar
+from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from . import _glshade
-from ._arrays import choice, matrix, optional_choice
+from ._intake import choice, flag, integer, matrix, optional_choice, real
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
 
 Float64Array = NDArray[np.float64]
-_L = TypeVar("_L", bound="Lights")
 
-_LIGHT_COLUMNS: dict[str, slice] = {}
-_start = 0
-for _name, _width in _glshade.LIGHT_LAYOUT:
-    _LIGHT_COLUMNS[_name] = slice(_start, _start + _width)
-    _start += _width
-_LIGHT_ROW_LEN = _start
+_LIGHT = _glshade.Lights.DEFAULTS
+_MATERIAL = _glshade.Material.DEFAULTS
+_SCENE = _glshade.Scene.DEFAULTS
 
 
-def _frozen(a: Float64Array) -> Float64Array:
-    a.flags.writeable = False
-    return a
-
-
-def _vector(value: ArrayLike, name: str, widths: tuple[int, ...]) -> Float64Array:
-    """One parameter as a float64 array of shape (k,) or (L, k); a colour of 3 gets alpha 1."""
-    a = np.asarray(value)
-    if a.dtype.kind not in "fiu" and a.dtype != np.bool_:
-        raise TypeError(f"{name} must be real numbers, got dtype {a.dtype}")
-    a = a.astype(np.float64)
-    if a.ndim not in (1, 2) or a.shape[-1] not in widths:
-        expected = " or ".join(f"({w},) or (L, {w})" for w in widths)
-        raise ValueError(f"{name} must have shape {expected}, got {a.shape}")
-    if a.shape[-1] == 3 and 4 in widths:
-        a = np.concatenate([a, np.ones((*a.shape[:-1], 1))], axis=-1)
-    return a
-
-
-def _scalar(value: ArrayLike, name: str) -> Float64Array:
-    """One scalar parameter as a float64 array of shape () or (L,)."""
-    a = np.asarray(value)
-    if a.dtype.kind not in "fiu":
-        raise TypeError(f"{name} must be real numbers, got dtype {a.dtype}")
-    if a.ndim > 1:
-        raise ValueError(f"{name} must be a number or have shape (L,), got {a.shape}")
-    return a.astype(np.float64)
+def _format(value: Any) -> str:
+    if np.ndim(value) == 0:
+        return f"{float(value):g}"
+    return "(" + ", ".join(f"{float(x):g}" for x in value) + ")"
 
 
 class Lights:
@@ -99,10 +72,10 @@ class Lights:
     10000
     """
 
-    __slots__ = ("_table",)
-    _table: Float64Array
-    # The parameters, as read-only properties made from LIGHT_LAYOUT below (one row per light,
-    # or the one light's value for a `Light`); declared here for type checkers.
+    __slots__ = ("_native",)
+    _native: _glshade.Lights
+    # The parameters, as read-only properties made from the native PARAMETERS below (one row
+    # per light, or the one light's value for a `Light`); declared here for type checkers.
     position: Any
     ambient: Any
     diffuse: Any
@@ -116,86 +89,67 @@ class Lights:
 
     def __init__(
         self,
-        position: ArrayLike = (0.0, 0.0, 1.0, 0.0),
-        diffuse: ArrayLike = (1.0, 1.0, 1.0, 1.0),
-        specular: ArrayLike = (1.0, 1.0, 1.0, 1.0),
-        constant_attenuation: ArrayLike = 1.0,
-        linear_attenuation: ArrayLike = 0.0,
-        quadratic_attenuation: ArrayLike = 0.0,
-        spot_direction: ArrayLike = (0.0, 0.0, -1.0),
-        spot_exponent: ArrayLike = 0.0,
-        spot_cutoff: ArrayLike = 180.0,
-        ambient: ArrayLike = (0.0, 0.0, 0.0, 1.0),
+        position: ArrayLike = _LIGHT["position"],
+        diffuse: ArrayLike = _LIGHT["diffuse"],
+        specular: ArrayLike = _LIGHT["specular"],
+        constant_attenuation: ArrayLike = _LIGHT["constant_attenuation"],
+        linear_attenuation: ArrayLike = _LIGHT["linear_attenuation"],
+        quadratic_attenuation: ArrayLike = _LIGHT["quadratic_attenuation"],
+        spot_direction: ArrayLike = _LIGHT["spot_direction"],
+        spot_exponent: ArrayLike = _LIGHT["spot_exponent"],
+        spot_cutoff: ArrayLike = _LIGHT["spot_cutoff"],
+        ambient: ArrayLike = _LIGHT["ambient"],
         *,
         count: int | None = None,
     ) -> None:
-        values = {
-            "position": _vector(position, "position", (4,)),
-            "ambient": _vector(ambient, "ambient", (3, 4)),
-            "diffuse": _vector(diffuse, "diffuse", (3, 4)),
-            "specular": _vector(specular, "specular", (3, 4)),
-            "spot_direction": _vector(spot_direction, "spot_direction", (3,)),
-            "spot_exponent": _scalar(spot_exponent, "spot_exponent"),
-            "spot_cutoff": _scalar(spot_cutoff, "spot_cutoff"),
-            "constant_attenuation": _scalar(constant_attenuation, "constant_attenuation"),
-            "linear_attenuation": _scalar(linear_attenuation, "linear_attenuation"),
-            "quadratic_attenuation": _scalar(quadratic_attenuation, "quadratic_attenuation"),
-        }
-        per_light = {
-            name: len(v)
-            for name, v in values.items()
-            if v.ndim == (2 if _LIGHT_COLUMNS[name].stop - _LIGHT_COLUMNS[name].start > 1 else 1)
-        }
-        counts = set(per_light.values()) | ({count} if count is not None else set())
-        if len(counts) > 1:
-            found = ", ".join(f"{k}: {n}" for k, n in per_light.items())
-            raise ValueError(
-                f"per-light parameters must all have the same number of rows, got {found}"
-                + (f" and count={count}" if count is not None else "")
-            )
-        n = counts.pop() if counts else 1
-        if n < 0:
-            raise ValueError(f"count must be >= 0, got {n}")
-        table = np.zeros((n, _LIGHT_ROW_LEN))
-        for name, v in values.items():
-            column = _LIGHT_COLUMNS[name]
-            table[:, column] = v.reshape(-1, column.stop - column.start) if v.ndim else v
-        _glshade.check_lights(table)
-        self._table = _frozen(table)
+        given = locals()
+        n = None if count is None else integer(count, "count", 0, 2**62)
+        parameters = [real(given[name], name) for name in _glshade.Lights.PARAMETERS]
+        self._native = _glshade.Lights(parameters, n)
 
     @classmethod
-    def _from_table(cls: type[_L], table: Float64Array) -> _L:
-        obj = cls.__new__(cls)
-        obj._table = _frozen(np.ascontiguousarray(table, dtype=np.float64))
+    def _wrap(cls, native: _glshade.Lights) -> Lights:
+        obj = Lights.__new__(Light if cls is Light and len(native) == 1 else Lights)
+        obj._native = native
         return obj
 
     @classmethod
     def concatenate(cls, lights: Iterable[Lights]) -> Lights:
         """All lights of several `Lights` (or `Light`) objects, in order."""
-        tables = [lt._table for lt in lights]
-        if not tables:
-            return Lights._from_table(np.zeros((0, _LIGHT_ROW_LEN)))
-        return Lights._from_table(np.concatenate(tables))
+        parts = []
+        for i, item in enumerate(lights):
+            if not isinstance(item, Lights):
+                raise TypeError(f"lights[{i}] must be a Light or Lights, got {type(item)!r}")
+            parts.append(item._native)
+        return Lights._wrap(_glshade.Lights.concatenate(parts))
 
     def __len__(self) -> int:
-        return len(self._table)
+        return len(self._native)
 
-    def __getitem__(self, index: int) -> Light:
-        row = self._table[index]
-        return Light._from_table(row[None, :])
+    def __getitem__(self, index: Any) -> Lights:
+        """``lights[i]`` is a `Light`; a slice, integer array or boolean mask gives `Lights`."""
+        try:
+            picked = np.arange(len(self))[index]
+        except IndexError:
+            raise IndexError(
+                f"light index {index!r} is out of range for {len(self)} lights"
+            ) from None
+        except (TypeError, ValueError) as e:
+            raise TypeError(
+                f"lights can be indexed by an integer, slice or array, got {index!r}: {e}"
+            ) from None
+        if np.ndim(picked) == 0:
+            return Light._wrap(self._native.take([int(picked)]))
+        return Lights._wrap(self._native.take(np.asarray(picked).tolist()))
 
     def _column(self, name: str) -> Float64Array:
-        return self._table[:, _LIGHT_COLUMNS[name]]
-
-    @property
-    def table(self) -> Float64Array:
-        """(L, 24) float64: the packed rows, columns as ``glshade._glshade.LIGHT_LAYOUT``."""
-        return self._table
+        column: Float64Array = self._native.column(name)
+        return column
 
     def __repr__(self) -> str:
-        kinds = np.where(self._column("position")[:, 3] == 0, "directional", "positional")
-        spots = int(np.count_nonzero(self._column("spot_cutoff")[:, 0] != 180))
-        n_dir = int(np.count_nonzero(kinds == "directional"))
+        kinds = self._column("position")[:, 3] == 0
+        spots = int(np.count_nonzero(self._column("spot_cutoff") != 180))
+        n_dir = int(np.count_nonzero(kinds))
         return (
             f"Lights({len(self)} lights: {n_dir} directional, {len(self) - n_dir} positional, "
             f"{spots} spot)"
@@ -204,23 +158,22 @@ class Lights:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Lights):
             return NotImplemented
-        return np.array_equal(self._table, other._table)
+        return bool(self._native == other._native)
 
     __hash__ = None  # type: ignore[assignment]
 
 
-def _light_property(name: str, width: int) -> property:
+def _light_property(name: str) -> property:
     def get(self: Lights) -> Any:
-        col = self._column(name)
-        value = col[:, 0] if width == 1 else col
+        value = self._column(name)
         return value[0] if isinstance(self, Light) else value
 
-    get.__doc__ = f"``{name}``, one row per light."
+    get.__doc__ = f"``{name}``, one row per light (read-only)."
     return property(get)
 
 
-for _name, _width in _glshade.LIGHT_LAYOUT:
-    setattr(Lights, _name, _light_property(_name, _width))
+for _name in _glshade.Lights.PARAMETERS:
+    setattr(Lights, _name, _light_property(_name))
 
 
 class Light(Lights):
@@ -242,53 +195,32 @@ class Light(Lights):
 
     def __init__(
         self,
-        position: ArrayLike = (0.0, 0.0, 1.0, 0.0),
-        diffuse: ArrayLike = (1.0, 1.0, 1.0, 1.0),
-        specular: ArrayLike = (1.0, 1.0, 1.0, 1.0),
-        constant_attenuation: float = 1.0,
-        linear_attenuation: float = 0.0,
-        quadratic_attenuation: float = 0.0,
-        spot_direction: ArrayLike = (0.0, 0.0, -1.0),
-        spot_exponent: float = 0.0,
-        spot_cutoff: float = 180.0,
-        ambient: ArrayLike = (0.0, 0.0, 0.0, 1.0),
+        position: ArrayLike = _LIGHT["position"],
+        diffuse: ArrayLike = _LIGHT["diffuse"],
+        specular: ArrayLike = _LIGHT["specular"],
+        constant_attenuation: float = _LIGHT["constant_attenuation"],
+        linear_attenuation: float = _LIGHT["linear_attenuation"],
+        quadratic_attenuation: float = _LIGHT["quadratic_attenuation"],
+        spot_direction: ArrayLike = _LIGHT["spot_direction"],
+        spot_exponent: float = _LIGHT["spot_exponent"],
+        spot_cutoff: float = _LIGHT["spot_cutoff"],
+        ambient: ArrayLike = _LIGHT["ambient"],
     ) -> None:
-        super().__init__(
-            position,
-            diffuse,
-            specular,
-            constant_attenuation,
-            linear_attenuation,
-            quadratic_attenuation,
-            spot_direction,
-            spot_exponent,
-            spot_cutoff,
-            ambient,
-        )
-        if len(self) != 1:
-            raise ValueError(
-                f"a Light takes one value per parameter, got {len(self)} rows: "
-                "use glshade.Lights for many lights"
-            )
+        given = locals()
+        parameters = [real(given[name], name) for name in _glshade.Lights.PARAMETERS]
+        for name, value in zip(_glshade.Lights.PARAMETERS, parameters, strict=True):
+            if value.ndim > (0 if np.ndim(_LIGHT[name]) == 0 else 1):
+                raise ValueError(
+                    f"a Light takes one value per parameter, got {name} of shape {value.shape}: "
+                    "use glshade.Lights for many lights"
+                )
+        self._native = _glshade.Lights(parameters, None)
 
     def __repr__(self) -> str:
         fields = ", ".join(
-            f"{name}={self._format(getattr(self, name))}" for name, _ in _glshade.LIGHT_LAYOUT
+            f"{name}={_format(getattr(self, name))}" for name in _glshade.Lights.PARAMETERS
         )
         return f"Light({fields})"
-
-    @staticmethod
-    def _format(value: Any) -> str:
-        if np.ndim(value) == 0:
-            return f"{float(value):g}"
-        return "(" + ", ".join(f"{float(x):g}" for x in value) + ")"
-
-
-def _rgba(value: ArrayLike, name: str) -> Float64Array:
-    a = _vector(value, name, (3, 4))
-    if a.ndim != 1:
-        raise ValueError(f"{name} must have shape (3,) or (4,), got {a.shape}")
-    return a
 
 
 class Material:
@@ -303,56 +235,50 @@ class Material:
         ``GL_SHININESS`` >= 0. GL limits it to 128; glshade accepts larger exponents too.
     """
 
-    __slots__ = ("_row",)
-    _row: Float64Array
+    __slots__ = ("_native",)
+    _native: _glshade.Material
 
     def __init__(
         self,
-        ambient: ArrayLike = (0.2, 0.2, 0.2, 1.0),
-        diffuse: ArrayLike = (0.8, 0.8, 0.8, 1.0),
-        specular: ArrayLike = (0.0, 0.0, 0.0, 1.0),
-        emission: ArrayLike = (0.0, 0.0, 0.0, 1.0),
-        shininess: float = 0.0,
+        ambient: ArrayLike = _MATERIAL["ambient"],
+        diffuse: ArrayLike = _MATERIAL["diffuse"],
+        specular: ArrayLike = _MATERIAL["specular"],
+        emission: ArrayLike = _MATERIAL["emission"],
+        shininess: float = _MATERIAL["shininess"],
     ) -> None:
-        if np.ndim(shininess) != 0:
-            raise ValueError(f"shininess must be a number, got shape {np.shape(shininess)}")
-        row = np.concatenate(
-            [
-                _rgba(ambient, "ambient"),
-                _rgba(diffuse, "diffuse"),
-                _rgba(specular, "specular"),
-                _rgba(emission, "emission"),
-                _scalar(shininess, "shininess").reshape(1),
-            ]
+        given = locals()
+        self._native = _glshade.Material(
+            [real(given[name], name) for name in _glshade.Material.PARAMETERS]
         )
-        _glshade.check_material(row, "material")
-        self._row = _frozen(row)
 
-    ambient = property(lambda self: self._row[0:4], doc="(4,) float64 ``GL_AMBIENT``.")
-    diffuse = property(lambda self: self._row[4:8], doc="(4,) float64 ``GL_DIFFUSE``.")
-    specular = property(lambda self: self._row[8:12], doc="(4,) float64 ``GL_SPECULAR``.")
-    emission = property(lambda self: self._row[12:16], doc="(4,) float64 ``GL_EMISSION``.")
-    shininess = property(lambda self: float(self._row[16]), doc="``GL_SHININESS``.")
-
-    @property
-    def row(self) -> Float64Array:
-        """(17,) float64: the packed row, as ``glshade._glshade.MATERIAL_LAYOUT``."""
-        return self._row
+    ambient = property(lambda self: self._native.get("ambient"), doc="(4,) ``GL_AMBIENT``.")
+    diffuse = property(lambda self: self._native.get("diffuse"), doc="(4,) ``GL_DIFFUSE``.")
+    specular = property(lambda self: self._native.get("specular"), doc="(4,) ``GL_SPECULAR``.")
+    emission = property(lambda self: self._native.get("emission"), doc="(4,) ``GL_EMISSION``.")
+    shininess = property(lambda self: float(self._native.get("shininess")), doc="``GL_SHININESS``.")
 
     def __repr__(self) -> str:
-        f = Light._format
         return (
-            f"Material(ambient={f(self.ambient)}, diffuse={f(self.diffuse)}, "
-            f"specular={f(self.specular)}, emission={f(self.emission)}, "
+            f"Material(ambient={_format(self.ambient)}, diffuse={_format(self.diffuse)}, "
+            f"specular={_format(self.specular)}, emission={_format(self.emission)}, "
             f"shininess={self.shininess:g})"
         )
 
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Material):
             return NotImplemented
-        return np.array_equal(self._row, other._row)
+        return bool(self._native == other._native)
 
     __hash__ = None  # type: ignore[assignment]
+
+
+def _rgba(value: ArrayLike, name: str) -> tuple[float, float, float, float]:
+    """A colour of 3 or 4 components as RGBA (a missing alpha is 1)."""
+    a = real(value, name)
+    if a.shape not in ((3,), (4,)):
+        raise ValueError(f"{name} must have shape (3,) or (4,), got shape {a.shape}")
+    r, g, b, alpha = (*a.tolist(), 1.0)[:4]
+    return (r, g, b, alpha)
 
 
 class Scene:
@@ -394,64 +320,46 @@ class Scene:
         "back_primary", "back_secondary")``.
     """
 
-    __slots__ = (
-        "_global_ambient",
-        "_lights",
-        "_viewer",
-        "back_material",
-        "material",
-        "separate_specular",
-        "specular",
-        "specular_gate",
-        "two_side",
-    )
+    __slots__ = ("_lights", "_native", "back_material", "material")
 
     def __init__(
         self,
         lights: Lights | Iterable[Lights] = (),
         material: Material | None = None,
         back_material: Material | None = None,
-        global_ambient: ArrayLike = (0.2, 0.2, 0.2, 1.0),
-        viewer: ArrayLike = (0.0, 0.0, 1.0, 0.0),
-        two_side: bool = False,
-        separate_specular: bool = False,
-        specular: Literal["blinn", "phong"] = "blinn",
-        specular_gate: bool = True,
+        global_ambient: ArrayLike = _SCENE["global_ambient"],
+        viewer: ArrayLike = _SCENE["viewer"],
+        two_side: bool = _SCENE["two_side"],
+        separate_specular: bool = _SCENE["separate_specular"],
+        specular: Literal["blinn", "phong"] = _SCENE["specular"],
+        specular_gate: bool = _SCENE["specular_gate"],
     ) -> None:
         if isinstance(lights, Lights):
             self._lights = lights
+        elif isinstance(lights, Iterable) and not isinstance(lights, (str, bytes)):
+            self._lights = Lights.concatenate(lights)
         else:
-            items = list(lights)
-            for i, item in enumerate(items):
-                if not isinstance(item, Lights):
-                    raise TypeError(f"lights[{i}] must be a Light or Lights, got {type(item)!r}")
-            self._lights = Lights.concatenate(items)
-        material = Material() if material is None else material
+            raise TypeError(
+                f"lights must be a Light, a Lights or a sequence of them, got {lights!r}"
+            )
         for name, m in (("material", material), ("back_material", back_material)):
             if m is not None and not isinstance(m, Material):
                 raise TypeError(f"{name} must be a Material or None, got {type(m)!r}")
-        self.material = material
-        self.back_material = material if back_material is None else back_material
-        self._global_ambient = _frozen(_rgba(global_ambient, "global_ambient"))
-        self._viewer = _frozen(_vector(viewer, "viewer", (4,)))
-        if self._viewer.ndim != 1:
-            raise ValueError(f"viewer must have shape (4,), got {self._viewer.shape}")
-        self.two_side = bool(two_side)
-        self.separate_specular = bool(separate_specular)
-        if not isinstance(specular, str):
-            raise TypeError(f"specular must be 'blinn' or 'phong', got {specular!r}")
-        self.specular = specular
-        if not isinstance(specular_gate, (bool, np.bool_)):
-            raise TypeError(f"specular_gate must be True or False, got {specular_gate!r}")
-        self.specular_gate = bool(specular_gate)
-        _glshade.check_scene(
-            self._lights.table,
-            self.material.row,
-            self.back_material.row,
-            self._global_ambient,
-            self._viewer,
-            self.specular,
-            self.specular_gate,
+        self.material = Material() if material is None else material
+        self.back_material = self.material if back_material is None else back_material
+        viewer_array = real(viewer, "viewer")
+        if viewer_array.shape != (4,):
+            raise ValueError(f"viewer must have shape (4,), got shape {viewer_array.shape}")
+        self._native = _glshade.Scene(
+            self._lights._native,
+            self.material._native,
+            None if back_material is None else back_material._native,
+            _rgba(global_ambient, "global_ambient"),
+            tuple(viewer_array.tolist()),
+            flag(two_side, "two_side"),
+            flag(separate_specular, "separate_specular"),
+            choice(specular, "specular"),
+            flag(specular_gate, "specular_gate"),
         )
 
     @property
@@ -459,38 +367,43 @@ class Scene:
         """All lights of the scene, as one `Lights`."""
         return self._lights
 
+    def _light_model(self) -> tuple[Any, ...]:
+        """global_ambient, viewer, two_side, separate_specular, specular, specular_gate."""
+        return tuple(self._native.__getnewargs__()[3:])
+
     @property
     def global_ambient(self) -> Float64Array:
         """(4,) float64 ``GL_LIGHT_MODEL_AMBIENT``."""
-        return self._global_ambient
+        return _frozen(self._light_model()[0])
 
     @property
     def viewer(self) -> Float64Array:
         """(4,) float64 homogeneous viewer."""
-        return self._viewer
+        return _frozen(self._light_model()[1])
+
+    @property
+    def two_side(self) -> bool:
+        """``GL_LIGHT_MODEL_TWO_SIDE``."""
+        return bool(self._light_model()[2])
+
+    @property
+    def separate_specular(self) -> bool:
+        """``GL_SEPARATE_SPECULAR_COLOR``."""
+        return bool(self._light_model()[3])
+
+    @property
+    def specular(self) -> str:
+        """``"blinn"`` or ``"phong"``."""
+        return str(self._light_model()[4])
+
+    @property
+    def specular_gate(self) -> bool:
+        """GL's ``f_i`` gate on the specular term."""
+        return bool(self._light_model()[5])
 
     @property
     def outputs(self) -> tuple[str, ...]:
-        return tuple(_glshade.output_names(self.two_side, self.separate_specular))
-
-    def _native(
-        self,
-    ) -> tuple[
-        Float64Array, Float64Array, Float64Array, Float64Array, Float64Array, bool, bool, str, bool
-    ]:
-        """The scene as the native functions take it: lights, material, back_material,
-        global_ambient, viewer, two_side, separate_specular, specular, specular_gate."""
-        return (
-            self._lights.table,
-            self.material.row,
-            self.back_material.row,
-            self._global_ambient,
-            self._viewer,
-            self.two_side,
-            self.separate_specular,
-            self.specular,
-            self.specular_gate,
-        )
+        return tuple(self._native.outputs)
 
     def plan(
         self,
@@ -523,22 +436,21 @@ class Scene:
         if name not in ("float16", "float32", "float64"):
             raise TypeError(f"dtype must be float32 or float64, got {name}")
         return _glshade.describe(
-            *self._native(),
+            self._native,
             None if modelview is None else matrix(modelview, "modelview"),
-            bool(normalize),
-            bool(rescale_normal),
+            flag(normalize, "normalize"),
+            flag(rescale_normal, "rescale_normal"),
             optional_choice(color_material, "color_material"),
             choice(color_material_face, "color_material_face"),
             choice(accuracy, "accuracy"),
-            bool(strict),
+            flag(strict, "strict"),
             "float64" if name == "float64" else "float32",
         )
 
     def __repr__(self) -> str:
-        f = Light._format
         return (
             f"Scene({self._lights!r}, material={self.material!r}, "
-            f"global_ambient={f(self._global_ambient)}, viewer={f(self._viewer)}, "
+            f"global_ambient={_format(self.global_ambient)}, viewer={_format(self.viewer)}, "
             f"two_side={self.two_side}, separate_specular={self.separate_specular}, "
             f"specular={self.specular!r}, specular_gate={self.specular_gate})"
         )
@@ -546,14 +458,12 @@ class Scene:
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, Scene):
             return NotImplemented
-        return (
-            self._lights == other._lights
-            and self.material == other.material
-            and self.back_material == other.back_material
-            and np.array_equal(self._global_ambient, other._global_ambient)
-            and np.array_equal(self._viewer, other._viewer)
-            and (self.two_side, self.separate_specular, self.specular, self.specular_gate)
-            == (other.two_side, other.separate_specular, other.specular, other.specular_gate)
-        )
+        return bool(self._native == other._native)
 
     __hash__ = None  # type: ignore[assignment]
+
+
+def _frozen(values: Any) -> Float64Array:
+    a = np.array(values, dtype=np.float64)
+    a.flags.writeable = False
+    return a

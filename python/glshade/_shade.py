@@ -4,17 +4,28 @@ from __future__ import annotations
 
 from typing import Literal
 
-import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._arrays import FloatArray, choice, float_dtype, matrix, optional_choice, rows
+from ._intake import (
+    FloatArray,
+    array,
+    choice,
+    compute_dtype,
+    flag,
+    matrix,
+    optional_choice,
+    out_array,
+    ready,
+    vertex_arrays,
+)
 from ._scene import Scene
 
 __all__ = ["shade"]
 
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
 Accuracy = Literal["fast", "exact"]
+_WIDTHS = {"positions": (3,), "normals": (3,), "colors": (3, 4)}
 
 
 def shade(
@@ -36,11 +47,13 @@ def shade(
 
     Parameters
     ----------
-    positions : (n, 3) float32 or float64
+    positions : (..., 3) array-like
         Vertex positions, in model coordinates (eye coordinates when `modelview` is None).
-    normals : (n, 3) float32 or float64
-        Vertex normals. Used as given, as in GL: a non-unit normal scales the diffuse and
-        specular terms unless `normalize` is set.
+    normals : (..., 3) array-like
+        Vertex normals; positions, normals and colours broadcast against each other (one normal
+        for every position, say), and their common leading shape is the result's. Used as
+        given, as in GL: a non-unit normal scales the diffuse and specular terms unless
+        `normalize` is set.
     scene : Scene
         Lights (in eye coordinates), materials and light model.
     modelview : (4, 4) float, optional
@@ -50,7 +63,7 @@ def shade(
         ``GL_NORMALIZE``: scale the transformed normals to unit length.
     rescale_normal : bool
         ``GL_RESCALE_NORMAL``: scale the transformed normals by M's rescale factor.
-    colors : (n, 3) or (n, 4) float, optional
+    colors : (..., 3) or (..., 4) array-like, optional
         Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1).
     color_material : {"ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
         The material parameter(s) the colours replace; default ``"ambient_and_diffuse"`` (GL's)
@@ -64,11 +77,12 @@ def shade(
     strict : bool
         Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
     out : ndarray, optional
-        A C-contiguous array of the result's shape and dtype to write into.
+        The array to write the result into: exactly the result's dtype and shape, C-contiguous,
+        aligned, writeable, and sharing no memory with an input.
 
     Returns
     -------
-    (n, 4) or (k, n, 4) ndarray of the computation dtype
+    (..., 4) or (k, ..., 4) ndarray of the computation dtype
         RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` the
         result has a leading axis of the ``k`` colours named by ``scene.outputs`` (front and
         back; primary and secondary; or all four). A vertex whose position, normal or colour
@@ -77,17 +91,20 @@ def shade(
     Notes
     -----
     The computation runs in float32 when `positions` and `normals` are float32 (or float16)
-    and in float64 when either is float64; Python sequences count as float64. Vertices are
-    shaded in parallel with the GIL released; the result does not depend on the number of
-    threads.
+    and in float64 otherwise (float64, integers, bools, Python sequences); any memory layout
+    is accepted (see the README's intake table). Vertices are shaded in parallel with the GIL
+    released; the result does not depend on the number of threads. Ctrl-C stops a long call
+    within a fraction of a second; `out` then holds some rows shaded and others as they were.
 
     Raises
     ------
     TypeError
-        For integer, complex or other non-float arrays.
+        For complex, string or object arrays, a non-string name or a non-bool flag.
     ValueError
-        For wrong shapes, mismatched lengths, unknown names, a bad `out`, or a singular,
-        projective or non-finite `modelview`.
+        For wrong shapes, shapes that do not broadcast, unknown names, a bad `out` or one that
+        shares memory with an input, or a singular, projective or non-finite `modelview`.
+    MemoryError
+        When the result cannot be allocated.
 
     Examples
     --------
@@ -98,28 +115,30 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    dtype = np.result_type(float_dtype(positions, "positions"), float_dtype(normals, "normals"))
-    p = rows(positions, "positions", dtype)
-    n = rows(normals, "normals", dtype)
-    c = None
+    given = {"positions": array(positions, "positions"), "normals": array(normals, "normals")}
+    widths = _WIDTHS
     if colors is not None:
-        c = rows(colors, "colors", dtype, width="3 or 4")
+        given["colors"] = array(colors, "colors")
         color_material = color_material or "ambient_and_diffuse"
-    m = None if modelview is None else matrix(modelview, "modelview")
-    if out is not None and not isinstance(out, np.ndarray):
-        raise TypeError(f"out must be a numpy array, got {type(out)!r}")
+    dtype = compute_dtype(given["positions"], given["normals"])
+    leading, given = vertex_arrays(given, widths)
+    inputs = {name: ready(a, dtype) for name, a in given.items()}
+    if out is not None:
+        k = len(scene.outputs)
+        shape = (*((k,) if k > 1 else ()), *leading, 4)
+        out = out_array(out, shape, dtype, inputs)
     result: FloatArray = _glshade.shade(
-        p,
-        n,
-        *scene._native(),
-        m,
-        bool(normalize),
-        bool(rescale_normal),
-        c,
+        inputs["positions"],
+        inputs["normals"],
+        scene._native,
+        None if modelview is None else matrix(modelview, "modelview"),
+        flag(normalize, "normalize"),
+        flag(rescale_normal, "rescale_normal"),
+        inputs.get("colors"),
         optional_choice(color_material, "color_material"),
         choice(color_material_face, "color_material_face"),
         choice(accuracy, "accuracy"),
-        bool(strict),
+        flag(strict, "strict"),
         out,
     )
     return result

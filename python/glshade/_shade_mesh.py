@@ -7,7 +7,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._arrays import FloatArray
+from ._intake import FloatArray
 from ._normals import Weighting, _mesh, face_normals, vertex_normals
 from ._scene import Scene
 from ._shade import shade

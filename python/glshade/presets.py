@@ -23,7 +23,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._arrays import FloatArray
+from ._intake import FloatArray
 from ._normals import Weighting
 from ._params import real_array, rgb, scalar, vector3
 from ._scene import Light, Lights, Material, Scene

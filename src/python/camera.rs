@@ -1,9 +1,9 @@
 //! The binding of the camera matrices (`gluLookAt`, `gluPerspective`, `glOrtho`).
 
-use numpy::{PyArray1, PyArrayMethods, PyReadonlyArray1};
+use numpy::{PyArray1, PyArrayMethods};
 use pyo3::prelude::*;
 
-use super::{to_pyerr, vec3};
+use super::runtime::to_pyerr;
 
 /// A `DMat4` as a row-major (4, 4) float64 array, as numpy prints matrices.
 fn to_numpy(py: Python<'_>, m: glam::DMat4) -> PyResult<Bound<'_, PyAny>> {
@@ -13,18 +13,13 @@ fn to_numpy(py: Python<'_>, m: glam::DMat4) -> PyResult<Bound<'_, PyAny>> {
 
 /// `gluLookAt`: the (4, 4) view matrix of a camera at `eye` looking at `target`.
 #[pyfunction]
-pub fn look_at<'py>(
-    py: Python<'py>,
-    eye: PyReadonlyArray1<'py, f64>,
-    target: PyReadonlyArray1<'py, f64>,
-    up: PyReadonlyArray1<'py, f64>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let m = crate::camera::look_at(
-        vec3(&eye, "eye")?,
-        vec3(&target, "target")?,
-        vec3(&up, "up")?,
-    )
-    .map_err(to_pyerr)?;
+pub fn look_at(
+    py: Python<'_>,
+    eye: [f64; 3],
+    target: [f64; 3],
+    up: [f64; 3],
+) -> PyResult<Bound<'_, PyAny>> {
+    let m = crate::camera::look_at(eye.into(), target.into(), up.into()).map_err(to_pyerr)?;
     to_numpy(py, m)
 }
 

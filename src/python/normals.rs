@@ -1,48 +1,40 @@
 //! The binding of `face_normals` and `vertex_normals`.
 
-use numpy::{
-    Element, PyArray2, PyArrayMethods, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods,
-};
-use pyo3::exceptions::PyValueError;
+use numpy::{Element, PyArrayMethods, PyUntypedArray};
 use pyo3::prelude::*;
 
-use super::{float_of, rows, to_pyerr, Float};
+use super::arrays::{float_of, read, rows, zeros, Float};
+use super::faces;
+use super::runtime::{run, to_pyerr};
 use crate::normals::Weighting;
 use crate::real::Real;
+
+/// Faces above which a call answers Ctrl-C while it runs (see `shading::LONG_CALL`).
+const LONG_CALL: usize = 1 << 15;
 
 fn normals_typed<'py, T: Element + Real>(
     py: Python<'py>,
     vertices: &Bound<'py, PyUntypedArray>,
-    faces: &PyReadonlyArray2<'py, i64>,
+    faces: &Bound<'py, PyUntypedArray>,
     weighting: Option<Weighting>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let vertices = vertices
-        .cast::<numpy::PyArray2<T>>()
-        .map_err(|_| {
-            PyValueError::new_err(format!(
-                "vertices must be a 2-d array, got {}-d",
-                vertices.ndim()
-            ))
-        })?
-        .readonly();
+    let vertices = read::<T>(vertices, "vertices")?;
     let v = rows::<T, 3>(&vertices, "vertices")?;
-    let f = rows::<i64, 3>(faces, "faces")?;
-    let rows_out = if weighting.is_some() {
+    let f = faces::copy(faces)?;
+    let count = if weighting.is_some() {
         v.len()
     } else {
         f.len()
     };
-    // numpy's allocator backs large arrays with huge pages: far fewer page faults than a Vec.
-    let array = PyArray2::<T>::zeros(py, [rows_out, 3], false);
-    {
-        let mut guard = array.readwrite();
-        let out = guard.as_slice_mut()?.as_chunks_mut::<3>().0;
-        py.detach(|| match weighting {
-            Some(w) => crate::normals::vertex_normals(v, f, w, out),
-            None => crate::normals::face_normals(v, f, out),
-        })
-        .map_err(to_pyerr)?;
-    }
+    let array = zeros::<T>(py, &[count, 3])?;
+    let mut rw = array.readwrite();
+    let out = rw.as_slice_mut()?.as_chunks_mut::<3>().0;
+    let f = &f[..];
+    run(py, f.len() > LONG_CALL, |stop| match weighting {
+        Some(w) => crate::normals::vertex_normals(v, f, w, out, stop),
+        None => crate::normals::face_normals(v, f, out, stop),
+    })?;
+    drop(rw);
     Ok(array.into_any())
 }
 
@@ -51,11 +43,11 @@ fn normals_typed<'py, T: Element + Real>(
 pub fn face_normals<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyUntypedArray>,
-    faces: PyReadonlyArray2<'py, i64>,
+    faces: &Bound<'py, PyUntypedArray>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    match float_of(py, vertices, "vertices")? {
-        Float::F32 => normals_typed::<f32>(py, vertices, &faces, None),
-        Float::F64 => normals_typed::<f64>(py, vertices, &faces, None),
+    match float_of(vertices, "vertices")? {
+        Float::F32 => normals_typed::<f32>(py, vertices, faces, None),
+        Float::F64 => normals_typed::<f64>(py, vertices, faces, None),
     }
 }
 
@@ -64,12 +56,12 @@ pub fn face_normals<'py>(
 pub fn vertex_normals<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyUntypedArray>,
-    faces: PyReadonlyArray2<'py, i64>,
+    faces: &Bound<'py, PyUntypedArray>,
     weighting: &str,
 ) -> PyResult<Bound<'py, PyAny>> {
     let weighting = Some(Weighting::parse(weighting).map_err(to_pyerr)?);
-    match float_of(py, vertices, "vertices")? {
-        Float::F32 => normals_typed::<f32>(py, vertices, &faces, weighting),
-        Float::F64 => normals_typed::<f64>(py, vertices, &faces, weighting),
+    match float_of(vertices, "vertices")? {
+        Float::F32 => normals_typed::<f32>(py, vertices, faces, weighting),
+        Float::F64 => normals_typed::<f64>(py, vertices, faces, weighting),
     }
 }

@@ -1,102 +1,73 @@
 //! The binding of `render`.
 
 use numpy::{
-    Element, PyArray1, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
+    Element, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
+    PyUntypedArrayMethods,
 };
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use super::{float_of, matrix, rows, scene_from, to_pyerr, typed, vec4, vertex_colors, Float};
+use super::arrays::{float_of, read, rows, vertex_colors, zeros, Float};
+use super::runtime::{run, to_pyerr};
+use super::scene::Scene;
+use super::{faces, matrix};
 use crate::camera::Camera;
 use crate::material::ColorMaterial;
 use crate::raster::{Cull, Viewport};
 use crate::real::Real;
 use crate::render::{Mesh, RenderOptions, Shading};
-use crate::scene::Scene;
-
-/// Every argument of `render` that does not depend on the dtype.
-struct Call {
-    scene: Scene,
-    camera: Camera,
-    options: RenderOptions,
-}
 
 fn render_typed<'py, T: Element + Real>(
     py: Python<'py>,
-    call: &Call,
+    scene: &Scene,
+    camera: &Camera,
+    options: &RenderOptions,
     vertices: &Bound<'py, PyUntypedArray>,
-    faces: &PyReadonlyArray2<'py, i64>,
+    faces: &Bound<'py, PyUntypedArray>,
     normals: Option<&Bound<'py, PyUntypedArray>>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let vertices = typed::<T>(vertices, "vertices", "vertices")?;
-    let normals = normals
-        .map(|a| typed::<T>(a, "normals", "vertices"))
-        .transpose()?;
-    let colors = colors
-        .map(|a| typed::<T>(a, "colors", "vertices"))
-        .transpose()?;
-    let v = rows::<T, 3>(&vertices, "vertices")?;
+    let vertices = read::<T>(vertices, "vertices")?;
+    let normals = normals.map(|a| read::<T>(a, "normals")).transpose()?;
+    let colors = colors.map(|a| read::<T>(a, "colors")).transpose()?;
+    let faces = faces::copy(faces)?;
     let mesh = Mesh {
-        vertices: v,
-        faces: rows::<i64, 3>(faces, "faces")?,
+        vertices: rows::<T, 3>(&vertices, "vertices")?,
+        faces: &faces,
         normals: normals
             .as_ref()
             .map(|n| rows::<T, 3>(n, "normals"))
             .transpose()?,
-        colors: colors
-            .as_ref()
-            .map(|c| vertex_colors(c, v.len()))
-            .transpose()?,
+        colors: colors.as_ref().map(vertex_colors).transpose()?,
     };
-    let viewport = call.options.viewport;
-    viewport.validate().map_err(to_pyerr)?;
-    let Viewport { width, height } = viewport;
-    let mut image = vec![T::ZERO; width * height * 4];
-    let mut depth = vec![T::ZERO; width * height];
-    py.detach(|| {
-        crate::render::render(
-            &call.scene,
-            &mesh,
-            &call.camera,
-            &call.options,
-            &mut image,
-            &mut depth,
-        )
-    })
-    .map_err(to_pyerr)?;
-    Ok((
-        PyArray1::from_vec(py, image)
-            .reshape([height, width, 4])?
-            .into_any(),
-        PyArray1::from_vec(py, depth)
-            .reshape([height, width])?
-            .into_any(),
-    ))
+    let Viewport { width, height } = options.viewport;
+    options.viewport.validate().map_err(to_pyerr)?;
+    let image = zeros::<T>(py, &[height, width, 4])?;
+    let depth = zeros::<T>(py, &[height, width])?;
+    {
+        let (mut image, mut depth) = (image.readwrite(), depth.readwrite());
+        let (image, depth) = (image.as_slice_mut()?, depth.as_slice_mut()?);
+        let scene = &scene.state;
+        run(py, true, |stop| {
+            crate::render::render(scene, &mesh, camera, options, image, depth, stop)
+        })?;
+    }
+    Ok((image.into_any(), depth.into_any()))
 }
 
-/// Renders a mesh; see `glshade.render` for the arguments, which arrive here already coerced
-/// (C-contiguous float32 or float64 arrays, int64 faces, float64 matrices and scene tables).
-/// Returns the (height, width, 4) image and the (height, width) depth, of the vertices' dtype.
+/// Renders a mesh; see `glshade.render`, whose intake prepared the arrays (float32 or float64
+/// of one dtype, int64 faces, float64 matrices). Returns the (height, width, 4) image and the
+/// (height, width) depth, of the vertices' dtype.
 #[pyfunction]
 #[pyo3(signature = (
-    vertices, faces, lights, material, back_material, global_ambient, viewer, two_side,
-    separate_specular, specular, specular_gate, view, projection, model, width, height, shading,
-    normals,
-    colors, color_material, color_material_face, normalize, rescale_normal, cull, background
+    vertices, faces, scene, view, projection, model, width, height, shading, normals, colors,
+    color_material, color_material_face, normalize, rescale_normal, cull, background
 ))]
 pub fn render<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyUntypedArray>,
-    faces: PyReadonlyArray2<'py, i64>,
-    lights: PyReadonlyArray2<'py, f64>,
-    material: PyReadonlyArray1<'py, f64>,
-    back_material: PyReadonlyArray1<'py, f64>,
-    global_ambient: PyReadonlyArray1<'py, f64>,
-    viewer: PyReadonlyArray1<'py, f64>,
-    two_side: bool,
-    separate_specular: bool,
-    specular: &str,
-    specular_gate: bool,
+    faces: &Bound<'py, PyUntypedArray>,
+    scene: &Bound<'py, Scene>,
     view: PyReadonlyArray2<'py, f64>,
     projection: PyReadonlyArray2<'py, f64>,
     model: PyReadonlyArray2<'py, f64>,
@@ -112,38 +83,36 @@ pub fn render<'py>(
     cull: &str,
     background: PyReadonlyArray1<'py, f64>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
-    let call = Call {
-        scene: scene_from(
-            &lights,
-            &material,
-            &back_material,
-            &global_ambient,
-            &viewer,
-            two_side,
-            separate_specular,
-            specular,
-            specular_gate,
-        )?,
-        camera: Camera {
-            view: matrix(&view, "view")?,
-            projection: matrix(&projection, "projection")?,
-        },
-        options: RenderOptions {
-            viewport: Viewport { width, height },
-            shading: Shading::parse(shading).map_err(to_pyerr)?,
-            cull: Cull::parse(cull).map_err(to_pyerr)?,
-            model: matrix(&model, "model")?,
-            background: vec4(&background, "background")?,
-            normalize,
-            rescale_normal,
-            color_material: color_material
-                .map(|mode| ColorMaterial::parse(mode, color_material_face))
-                .transpose()
-                .map_err(to_pyerr)?,
-        },
+    let camera = Camera {
+        view: matrix(&view, "view")?,
+        projection: matrix(&projection, "projection")?,
     };
-    match float_of(py, vertices, "vertices")? {
-        Float::F32 => render_typed::<f32>(py, &call, vertices, &faces, normals, colors),
-        Float::F64 => render_typed::<f64>(py, &call, vertices, &faces, normals, colors),
+    let background: [f64; 4] = background.as_slice()?.try_into().map_err(|_| {
+        PyValueError::new_err(format!(
+            "background must have 4 values, got {:?}",
+            background.shape()
+        ))
+    })?;
+    let options = RenderOptions {
+        viewport: Viewport { width, height },
+        shading: Shading::parse(shading).map_err(to_pyerr)?,
+        cull: Cull::parse(cull).map_err(to_pyerr)?,
+        model: matrix(&model, "model")?,
+        background,
+        normalize,
+        rescale_normal,
+        color_material: color_material
+            .map(|mode| ColorMaterial::parse(mode, color_material_face))
+            .transpose()
+            .map_err(to_pyerr)?,
+    };
+    let scene = scene.get();
+    match float_of(vertices, "vertices")? {
+        Float::F32 => render_typed::<f32>(
+            py, scene, &camera, &options, vertices, faces, normals, colors,
+        ),
+        Float::F64 => render_typed::<f64>(
+            py, scene, &camera, &options, vertices, faces, normals, colors,
+        ),
     }
 }

@@ -1,100 +1,62 @@
-//! The binding of `shade`.
+//! The binding of `shade` and `describe`.
 
-use std::mem::MaybeUninit;
-
-use numpy::{
-    Element, PyArrayDyn, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
-    PyUntypedArrayMethods,
-};
-use pyo3::exceptions::{PyTypeError, PyValueError};
+use numpy::{Element, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
+use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use super::{float_of, matrix, rows, scene_from, to_pyerr, typed, vertex_colors, Float};
+use super::arrays::{filled, float_of, read, rows, vertex_colors, write, Float};
+use super::matrix;
+use super::runtime::{run, to_pyerr};
+use super::scene::Scene;
 use crate::material::ColorMaterial;
 use crate::prepare::{Accuracy, ShadeOptions};
 use crate::real::Real;
-use crate::scene::Scene;
 
-/// Every argument of `shade` that does not depend on the dtype.
-struct Call {
-    scene: Scene,
-    options: ShadeOptions,
-}
+/// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
+/// of work: below it, the helper thread that watches for signals would cost more than it saves).
+const LONG_CALL: usize = 1 << 17;
 
 fn shade_typed<'py, T: Element + Real>(
     py: Python<'py>,
-    call: &Call,
+    scene: &Scene,
+    options: &ShadeOptions,
     positions: &Bound<'py, PyUntypedArray>,
     normals: &Bound<'py, PyUntypedArray>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
     out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let positions = typed::<T>(positions, "positions", "positions")?;
-    let normals = typed::<T>(normals, "normals", "positions")?;
-    let colors = colors
-        .map(|c| typed::<T>(c, "colors", "positions"))
-        .transpose()?;
-    let n = positions.shape()[0];
-    let (p, nr) = (
+    let scene = &scene.state;
+    let positions = read::<T>(positions, "positions")?;
+    let normals = read::<T>(normals, "normals")?;
+    let colors = colors.map(|c| read::<T>(c, "colors")).transpose()?;
+    let (p, n) = (
         rows::<T, 3>(&positions, "positions")?,
         rows::<T, 3>(&normals, "normals")?,
     );
-    let vertex_colors = colors.as_ref().map(|c| vertex_colors(c, n)).transpose()?;
-    let planes = call.scene.output_count();
-    let shape: Vec<usize> = if planes == 1 {
-        vec![n, 4]
-    } else {
-        vec![planes, n, 4]
-    };
-    let run =
-        |dst: &mut [T]| crate::shade::shade(&call.scene, p, nr, vertex_colors, &call.options, dst);
-    let Some(out) = out else {
-        let array = filled_array(py, &shape, |dst| {
-            crate::shade::shade_uninit(&call.scene, p, nr, vertex_colors, &call.options, dst)
-        })?;
-        return Ok(array.into_any());
-    };
-    let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
-        PyTypeError::new_err(format!(
-            "out must be an array of {}, got {}",
-            numpy::dtype::<T>(py),
-            out.dtype()
-        ))
-    })?;
-    if array.shape() != shape.as_slice() {
-        return Err(PyValueError::new_err(format!(
-            "out must have shape {shape:?}, got {:?}",
-            array.shape()
-        )));
+    let vertex_colors = colors.as_ref().map(vertex_colors).transpose()?;
+    let planes = scene.output_count();
+    let leading = &normals.shape()[..normals.ndim() - 1];
+    let mut shape: Vec<usize> = Vec::with_capacity(leading.len() + 2);
+    if planes > 1 {
+        shape.push(planes);
     }
-    let mut rw = array
-        .try_readwrite()
-        .map_err(|e| PyValueError::new_err(format!("out: {e}")))?;
-    let dst = rw
-        .as_slice_mut()
-        .map_err(|_| PyValueError::new_err("out must be C-contiguous and writeable"))?;
-    py.detach(|| run(dst)).map_err(to_pyerr)?;
-    Ok(array.clone().into_any())
-}
-
-/// A new C-contiguous array of `shape` from numpy's allocator, filled by `write` with the GIL
-/// released. It starts uninitialised, as numpy's own ufunc outputs do (numpy also advises huge
-/// pages for large arrays): clearing it first would cost a pass over memory as long as
-/// shading one light.
-#[allow(unsafe_code)]
-fn filled_array<'py, T: Element>(
-    py: Python<'py>,
-    shape: &[usize],
-    write: impl FnOnce(&mut [MaybeUninit<T>]) -> Result<(), crate::Error> + Send,
-) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
-    // SAFETY: the array reaches Python only after `write` returned Ok, which means it wrote
-    // every element; on an error it is dropped unread.
-    let array = unsafe { PyArrayDyn::<T>::new(py, shape, false) };
-    // SAFETY: the fresh array is C-contiguous and nothing else refers to its data yet;
-    // MaybeUninit<T> has T's layout and may hold anything.
-    let dst = unsafe { std::slice::from_raw_parts_mut(array.data().cast(), array.len()) };
-    py.detach(|| write(dst)).map_err(to_pyerr)?;
-    Ok(array)
+    shape.extend_from_slice(leading);
+    shape.push(4);
+    let long = n.len().saturating_mul(scene.lights.len() + 1) > LONG_CALL;
+    if let Some(out) = out {
+        let mut rw = write::<T>(out, &shape)?;
+        let dst = rw.as_slice_mut()?;
+        run(py, long, |stop| {
+            crate::shade::shade(scene, p, n, vertex_colors, options, dst, stop)
+        })?;
+        return Ok(out.clone().into_any());
+    }
+    let array = filled::<T>(py, &shape, |dst| {
+        run(py, long, |stop| {
+            crate::shade::shade_uninit(scene, p, n, vertex_colors, options, dst, stop)
+        })
+    })?;
+    Ok(array.into_any())
 }
 
 /// The options of a `shade` call from the binding's arguments.
@@ -122,27 +84,19 @@ fn options_from(
     })
 }
 
-/// Lights the vertices; see `glshade.shade` for the arguments, which arrive here already
-/// coerced (C-contiguous float32 or float64 arrays, light and material tables as float64).
+/// Lights the vertices of `scene`; see `glshade.shade`, whose intake prepared the arrays
+/// (float32 or float64 of one dtype, C-contiguous, positions and normals of one shape
+/// (..., 3), colours (..., 3|4), `out` checked against the inputs).
 #[pyfunction]
 #[pyo3(signature = (
-    positions, normals, lights, material, back_material, global_ambient, viewer, two_side,
-    separate_specular, specular, specular_gate, modelview, normalize, rescale_normal, colors,
-    color_material, color_material_face, accuracy, strict, out
+    positions, normals, scene, modelview, normalize, rescale_normal, colors, color_material,
+    color_material_face, accuracy, strict, out
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
     positions: &Bound<'py, PyUntypedArray>,
     normals: &Bound<'py, PyUntypedArray>,
-    lights: PyReadonlyArray2<'py, f64>,
-    material: PyReadonlyArray1<'py, f64>,
-    back_material: PyReadonlyArray1<'py, f64>,
-    global_ambient: PyReadonlyArray1<'py, f64>,
-    viewer: PyReadonlyArray1<'py, f64>,
-    two_side: bool,
-    separate_specular: bool,
-    specular: &str,
-    specular_gate: bool,
+    scene: &Bound<'py, Scene>,
     modelview: Option<PyReadonlyArray2<'py, f64>>,
     normalize: bool,
     rescale_normal: bool,
@@ -162,42 +116,22 @@ pub fn shade<'py>(
         accuracy,
         strict,
     )?;
-    let scene = scene_from(
-        &lights,
-        &material,
-        &back_material,
-        &global_ambient,
-        &viewer,
-        two_side,
-        separate_specular,
-        specular,
-        specular_gate,
-    )?;
-    let call = Call { scene, options };
-    match float_of(py, positions, "positions")? {
-        Float::F32 => shade_typed::<f32>(py, &call, positions, normals, colors, out),
-        Float::F64 => shade_typed::<f64>(py, &call, positions, normals, colors, out),
+    let scene = scene.get();
+    match float_of(positions, "positions")? {
+        Float::F32 => shade_typed::<f32>(py, scene, &options, positions, normals, colors, out),
+        Float::F64 => shade_typed::<f64>(py, scene, &options, positions, normals, colors, out),
     }
 }
 
-/// One line saying what `shade` computes for this scene and these options in `dtype`
+/// One line saying what `shade` computes for `scene` with these options in `dtype`
 /// ("float32" or "float64"); see `glshade.Scene.plan`.
 #[pyfunction]
 #[pyo3(signature = (
-    lights, material, back_material, global_ambient, viewer, two_side, separate_specular,
-    specular, specular_gate, modelview, normalize, rescale_normal, color_material,
-    color_material_face, accuracy, strict, dtype
+    scene, modelview, normalize, rescale_normal, color_material, color_material_face, accuracy,
+    strict, dtype
 ))]
 pub fn describe(
-    lights: PyReadonlyArray2<'_, f64>,
-    material: PyReadonlyArray1<'_, f64>,
-    back_material: PyReadonlyArray1<'_, f64>,
-    global_ambient: PyReadonlyArray1<'_, f64>,
-    viewer: PyReadonlyArray1<'_, f64>,
-    two_side: bool,
-    separate_specular: bool,
-    specular: &str,
-    specular_gate: bool,
+    scene: &Bound<'_, Scene>,
     modelview: Option<PyReadonlyArray2<'_, f64>>,
     normalize: bool,
     rescale_normal: bool,
@@ -216,20 +150,10 @@ pub fn describe(
         accuracy,
         strict,
     )?;
-    let scene = scene_from(
-        &lights,
-        &material,
-        &back_material,
-        &global_ambient,
-        &viewer,
-        two_side,
-        separate_specular,
-        specular,
-        specular_gate,
-    )?;
+    let scene = &scene.get().state;
     match dtype {
-        "float32" => crate::shade::describe::<f32>(&scene, &options),
-        "float64" => crate::shade::describe::<f64>(&scene, &options),
+        "float32" => crate::shade::describe::<f32>(scene, &options),
+        "float64" => crate::shade::describe::<f64>(scene, &options),
         _ => {
             return Err(PyValueError::new_err(format!(
                 "dtype must be 'float32' or 'float64', got '{dtype}'"

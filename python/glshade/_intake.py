@@ -1,0 +1,230 @@
+"""The one intake of every array argument of every public function.
+
+The rules (the README's table):
+
+- Anything numpy turns into an array is accepted: ndarrays of any byte order, alignment and
+  memory order, lists, tuples, memoryviews, xarray and other array-likes.
+- Real numbers only: floats, integers and bools (True is 1); complex, strings, objects and long
+  doubles raise ``TypeError`` naming the argument.
+- The computation dtype of vertex data is float32 when every vertex array is float32 or float16,
+  and float64 otherwise (float64, any integer or bool, a Python sequence), as numpy promotes.
+  Results have that dtype. Scene parameters and matrices are float64.
+- What the native module reads is a C-contiguous, aligned, native-order array: an argument that
+  already is one is used as it is, anything else is copied.
+- ``out=`` is never copied: it must be exactly right, and it must not share memory with an input.
+"""
+
+from __future__ import annotations
+
+import mmap
+import os
+from typing import Any
+
+import numpy as np
+from numpy.typing import ArrayLike, NDArray
+
+FloatArray = NDArray[np.floating[Any]]
+Float64Array = NDArray[np.float64]
+
+_FLOAT32 = np.dtype(np.float32)
+_FLOAT64 = np.dtype(np.float64)
+# Bounds the work of np.shares_memory; beyond it, memory that may be shared counts as shared.
+_OVERLAP_WORK = 1 << 16
+
+
+def array(value: ArrayLike, name: str) -> NDArray[Any]:
+    """`value` as an ndarray of real numbers (no copy where numpy needs none)."""
+    if type(value) is np.ndarray:
+        a = value
+    else:
+        try:
+            a = np.asarray(value)
+        except (TypeError, ValueError) as e:
+            raise TypeError(
+                f"{name} must be an array of real numbers, got {type(value).__name__} ({e})"
+            ) from None
+    if a.dtype.kind not in "fiub":
+        raise TypeError(
+            f"{name} must be real numbers (float, integer or bool), got dtype {a.dtype}"
+        )
+    if a.dtype.itemsize > 8:
+        raise TypeError(
+            f"{name} must be at most float64 (glshade computes in float32 or float64), "
+            f"got dtype {a.dtype}: convert it with .astype(np.float64)"
+        )
+    return a
+
+
+def real(value: ArrayLike, name: str) -> Float64Array:
+    """`value` as a C-contiguous float64 array of any shape (scene parameters, matrices)."""
+    a: Float64Array = np.require(array(value, name), _FLOAT64, ("C", "A"))
+    return a
+
+
+def compute_dtype(*arrays: NDArray[Any]) -> np.dtype[Any]:
+    """float32 when every array is float32 or float16, else float64."""
+    for a in arrays:
+        if a.dtype.kind != "f" or a.dtype.itemsize > 4:
+            return _FLOAT64
+    return _FLOAT32
+
+
+def ready(a: NDArray[Any], dtype: np.dtype[Any]) -> FloatArray:
+    """`a` as what the native module reads: C-contiguous, aligned, native order, `dtype`."""
+    if a.dtype is dtype and a.flags.c_contiguous and a.flags.aligned:
+        return a
+    result: FloatArray = np.require(a, dtype, ("C", "A"))
+    return result
+
+
+def _describe(widths: tuple[int, ...]) -> str:
+    return " or ".join(f"(..., {w})" for w in widths)
+
+
+def vertex_arrays(
+    given: dict[str, NDArray[Any]], widths: dict[str, tuple[int, ...]]
+) -> tuple[tuple[int, ...], dict[str, NDArray[Any]]]:
+    """The leading shape that arrays of shape (..., width) broadcast to, and each array
+    broadcast to it (views, not copies); a ValueError names the arrays that do not fit."""
+    leading = []
+    for name, a in given.items():
+        if a.ndim == 0 or a.shape[-1] not in widths[name]:
+            raise ValueError(
+                f"{name} must have shape {_describe(widths[name])}, got shape {a.shape}"
+            )
+        leading.append(a.shape[:-1])
+    first = leading[0]
+    if all(s == first for s in leading):
+        return first, given
+    try:
+        shape = np.broadcast_shapes(*leading)
+    except ValueError:
+        found = ", ".join(f"{name} {a.shape}" for name, a in given.items())
+        raise ValueError(
+            f"the leading shapes of {', '.join(given)} must broadcast together, got {found}"
+        ) from None
+    return shape, {name: np.broadcast_to(a, (*shape, a.shape[-1])) for name, a in given.items()}
+
+
+def rows(
+    value: ArrayLike, name: str, dtype: np.dtype[Any] | None = None, widths: tuple[int, ...] = (3,)
+) -> FloatArray:
+    """Mesh data as a ready (n, width) array of `dtype` (default: the one it computes in)."""
+    a = array(value, name)
+    if a.ndim != 2 or a.shape[1] not in widths:
+        expected = " or ".join(f"(n, {w})" for w in widths)
+        raise ValueError(f"{name} must have shape {expected}, got shape {a.shape}")
+    return ready(a, compute_dtype(a) if dtype is None else dtype)
+
+
+def indices(value: ArrayLike, name: str) -> NDArray[np.int64]:
+    """Triangles as a C-contiguous (m, 3) int64 array, from any integer dtype."""
+    a = array(value, name)
+    if a.dtype.kind not in "iu" and not (a.size == 0 and a.dtype.kind == "f"):
+        raise TypeError(f"{name} must be an integer array, got dtype {a.dtype}")
+    if a.ndim != 2 or a.shape[1] != 3:
+        raise ValueError(f"{name} must have shape (m, 3), got shape {a.shape}")
+    if a.dtype.kind == "u" and a.size and a.max() > np.iinfo(np.int64).max:
+        raise IndexError(f"{name} holds index {a.max()}, beyond any vertex count")
+    result: NDArray[np.int64] = np.require(a, np.int64, ("C", "A"))
+    return result
+
+
+def matrix(value: ArrayLike, name: str) -> Float64Array:
+    """A (4, 4) matrix of real numbers as a C-contiguous float64 array."""
+    m = real(value, name)
+    if m.shape != (4, 4):
+        raise ValueError(f"{name} must have shape (4, 4), got shape {m.shape}")
+    return m
+
+
+def flag(value: object, name: str) -> bool:
+    """`value` checked to be True or False (numpy's bool too): a string such as 'no' is not."""
+    if isinstance(value, (bool, np.bool_)):
+        return bool(value)
+    raise TypeError(f"{name} must be True or False, got {value!r}")
+
+
+def integer(value: object, name: str, low: int, high: int) -> int:
+    """`value` checked to be an integer in [low, high]."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise TypeError(f"{name} must be an integer, got {value!r}")
+    if not low <= value <= high:
+        raise ValueError(f"{name} must be in [{low}, {high}], got {value}")
+    return int(value)
+
+
+def number(value: object, name: str) -> float:
+    """`value` checked to be a real number (not a bool, a string or None), as a float."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        raise TypeError(f"{name} must be a number, got {value!r}")
+    if isinstance(value, np.complexfloating):
+        raise TypeError(f"{name} must be a real number, got {value!r}")
+    return float(value)
+
+
+def choice(value: object, name: str) -> str:
+    """`value` checked to be a string before the native module parses it."""
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {value!r}")
+    return value
+
+
+def optional_choice(value: object, name: str) -> str | None:
+    """`value` checked to be a string or None."""
+    return None if value is None else choice(value, name)
+
+
+def _mapped_file(a: object) -> str | None:
+    """The file `a`'s memory maps ("" when it is mapped from a file glshade cannot name)."""
+    seen = 0
+    while a is not None and seen < 64:
+        if isinstance(a, np.memmap) and isinstance(a.filename, str):
+            return os.path.realpath(a.filename)
+        if isinstance(a, mmap.mmap):
+            return ""
+        a = a.obj if isinstance(a, memoryview) else getattr(a, "base", None)
+        seen += 1
+    return None
+
+
+def may_share(a: NDArray[Any], b: NDArray[Any]) -> bool:
+    """Whether `a` and `b` may share memory: overlapping addresses (exactly, within a bounded
+    effort), or two maps of one file (at different addresses, which numpy cannot see)."""
+    if np.may_share_memory(a, b):
+        try:
+            return bool(np.shares_memory(a, b, max_work=_OVERLAP_WORK))
+        except np.exceptions.TooHardError:
+            return True
+    file_a = _mapped_file(a)
+    if file_a is None:
+        return False
+    file_b = _mapped_file(b)
+    return file_b is not None and (file_a == "" or file_b == "" or file_a == file_b)
+
+
+def out_array(
+    out: object, shape: tuple[int, ...], dtype: np.dtype[Any], inputs: dict[str, NDArray[Any]]
+) -> FloatArray:
+    """`out` checked to be exactly the result's array: `dtype` in native order, `shape`,
+    C-contiguous, aligned and writeable, sharing no memory with any of `inputs`."""
+    if not isinstance(out, np.ndarray):
+        raise TypeError(f"out must be a numpy array, got {type(out).__name__}")
+    if out.dtype != dtype:
+        raise TypeError(f"out must have dtype {dtype} (native byte order), got {out.dtype}")
+    if out.shape != shape:
+        raise ValueError(f"out must have shape {shape}, got {out.shape}")
+    for flag_name, message in (
+        ("C_CONTIGUOUS", "C-contiguous"),
+        ("ALIGNED", "aligned"),
+        ("WRITEABLE", "writeable"),
+    ):
+        if not out.flags[flag_name]:
+            raise ValueError(f"out must be {message}, got an array that is not")
+    for name, a in inputs.items():
+        if may_share(out, a):
+            raise ValueError(
+                f"out and {name} share memory (or may: both map one file): the result would "
+                f"overwrite {name} while it is read; pass a separate out"
+            )
+    return out

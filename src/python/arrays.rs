@@ -1,0 +1,193 @@
+//! Arrays at the boundary: borrowing what the package's intake (`glshade._intake`) prepared, and
+//! allocating results so that a failed allocation is a `MemoryError`, not an abort.
+
+use std::mem::MaybeUninit;
+
+use numpy::npyffi::{self, npy_intp, PY_ARRAY_API};
+use numpy::{
+    Element, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn,
+    PyReadwriteArrayDyn, PyUntypedArray, PyUntypedArrayMethods,
+};
+use pyo3::exceptions::{PyTypeError, PyValueError};
+use pyo3::prelude::*;
+
+use crate::shade::VertexColors;
+
+/// The computation type an input array selects.
+pub enum Float {
+    /// `float32`.
+    F32,
+    /// `float64`.
+    F64,
+}
+
+/// The float type of `array`, which the intake made float32 or float64.
+pub fn float_of(array: &Bound<'_, PyUntypedArray>, name: &str) -> PyResult<Float> {
+    let py = array.py();
+    let dtype = array.dtype();
+    if dtype.is_equiv_to(&numpy::dtype::<f32>(py)) {
+        Ok(Float::F32)
+    } else if dtype.is_equiv_to(&numpy::dtype::<f64>(py)) {
+        Ok(Float::F64)
+    } else {
+        Err(PyTypeError::new_err(format!(
+            "{name} must be float32 or float64, got {dtype}"
+        )))
+    }
+}
+
+/// A read borrow of `array` as `T`; a conflict with a write borrow (the same memory passed as
+/// `out=` to a call running in another thread) is a `ValueError` naming `name`.
+pub fn read<'py, T: Element>(
+    array: &Bound<'py, PyUntypedArray>,
+    name: &str,
+) -> PyResult<PyReadonlyArrayDyn<'py, T>> {
+    let typed = array.cast::<PyArrayDyn<T>>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "{name} must be an array of {}, got {}",
+            numpy::dtype::<T>(array.py()),
+            array.dtype()
+        ))
+    })?;
+    typed.try_readonly().map_err(|_| {
+        PyValueError::new_err(format!(
+            "{name} is being written by another call (it is that call's out=)"
+        ))
+    })
+}
+
+/// The rows of a C-contiguous array whose last axis has length `K`, without copying.
+pub fn rows<'a, T: Element, const K: usize>(
+    array: &'a PyReadonlyArrayDyn<'_, T>,
+    name: &str,
+) -> PyResult<&'a [[T; K]]> {
+    let shape = array.shape();
+    if shape.last() != Some(&K) {
+        return Err(PyValueError::new_err(format!(
+            "{name} must have shape (..., {K}), got {shape:?}"
+        )));
+    }
+    let data = array
+        .as_slice()
+        .map_err(|_| PyValueError::new_err(format!("{name} must be C-contiguous and aligned")))?;
+    Ok(data.as_chunks::<K>().0)
+}
+
+/// Per-vertex colours of width 3 or 4 for `GL_COLOR_MATERIAL`.
+pub fn vertex_colors<'a, T: Element>(
+    colors: &'a PyReadonlyArrayDyn<'_, T>,
+) -> PyResult<VertexColors<'a, T>> {
+    let width = colors.shape().last().copied().unwrap_or(0);
+    let data = match width {
+        3 => rows::<T, 3>(colors, "colors")?.as_flattened(),
+        4 => rows::<T, 4>(colors, "colors")?.as_flattened(),
+        _ => {
+            return Err(PyValueError::new_err(format!(
+                "colors must have shape (..., 3) or (..., 4), got {:?}",
+                colors.shape()
+            )))
+        }
+    };
+    Ok(VertexColors { data, width })
+}
+
+/// A write borrow of `out`, which the intake checked for dtype, shape and layout; a conflict
+/// with another borrow (the same memory in use by a call in another thread) is a `ValueError`.
+pub fn write<'py, T: Element>(
+    out: &Bound<'py, PyUntypedArray>,
+    shape: &[usize],
+) -> PyResult<PyReadwriteArrayDyn<'py, T>> {
+    let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
+        PyTypeError::new_err(format!(
+            "out must be an array of {}, got {}",
+            numpy::dtype::<T>(out.py()),
+            out.dtype()
+        ))
+    })?;
+    if array.shape() != shape {
+        return Err(PyValueError::new_err(format!(
+            "out must have shape {shape:?}, got {:?}",
+            array.shape()
+        )));
+    }
+    let rw = array.try_readwrite().map_err(|_| {
+        PyValueError::new_err("out is in use by another call (as an input or as its out=)")
+    })?;
+    if !rw.is_c_contiguous() {
+        return Err(PyValueError::new_err(
+            "out must be C-contiguous and aligned",
+        ));
+    }
+    Ok(rw)
+}
+
+/// A new C-contiguous array of `shape`, filled by `write` before Python sees it; it starts
+/// uninitialised, as numpy's own ufunc results do (clearing it would cost a pass over memory as
+/// long as shading one light), and a failed allocation is numpy's `MemoryError`.
+#[allow(unsafe_code)]
+pub fn filled<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+    write: impl FnOnce(&mut [MaybeUninit<T>]) -> PyResult<()>,
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    let mut dims = dims(shape)?;
+    // SAFETY: as rust-numpy's own `PyArray::new`: a fresh array of T's descriptor (whose
+    // reference PyArray_NewFromDescr steals), C order, numpy's allocator; a null result is
+    // numpy's error, which `from_owned_ptr_or_err` takes.
+    let array: Bound<'py, PyArrayDyn<T>> = unsafe {
+        let ptr = PY_ARRAY_API.PyArray_NewFromDescr(
+            py,
+            npyffi::get_type_object(py, npyffi::NpyTypes::PyArray_Type),
+            T::get_dtype(py).into_dtype_ptr(),
+            rank(&dims)?,
+            dims.as_mut_ptr(),
+            std::ptr::null_mut(),
+            std::ptr::null_mut(),
+            0,
+            std::ptr::null_mut(),
+        );
+        Bound::from_owned_ptr_or_err(py, ptr)?.cast_into_unchecked()
+    };
+    // SAFETY: the array is C-contiguous, owns its data and nothing else refers to it yet;
+    // MaybeUninit<T> has T's layout and may hold anything. The array reaches Python only when
+    // `write` returned Ok, which means it wrote every element; on an error it is dropped unread.
+    let data = unsafe { std::slice::from_raw_parts_mut(array.data().cast(), array.len()) };
+    write(data)?;
+    Ok(array)
+}
+
+/// A new C-contiguous array of `shape` filled with zeros (numpy's `calloc`: fresh pages cost
+/// no pass over memory), or `MemoryError`.
+#[allow(unsafe_code)]
+pub fn zeros<'py, T: Element>(
+    py: Python<'py>,
+    shape: &[usize],
+) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
+    let mut dims = dims(shape)?;
+    // SAFETY: as rust-numpy's `PyArray::zeros`, with numpy's null result taken as its error.
+    unsafe {
+        let ptr = PY_ARRAY_API.PyArray_Zeros(
+            py,
+            rank(&dims)?,
+            dims.as_mut_ptr(),
+            T::get_dtype(py).into_dtype_ptr(),
+            0,
+        );
+        Ok(Bound::from_owned_ptr_or_err(py, ptr)?.cast_into_unchecked())
+    }
+}
+
+/// The number of dimensions, as numpy's C API takes it.
+fn rank(dims: &[npy_intp]) -> PyResult<std::ffi::c_int> {
+    std::ffi::c_int::try_from(dims.len())
+        .map_err(|_| PyValueError::new_err(format!("{} dimensions are too many", dims.len())))
+}
+
+/// `shape` as numpy's dimensions.
+fn dims(shape: &[usize]) -> PyResult<Vec<npy_intp>> {
+    shape
+        .iter()
+        .map(|&d| npy_intp::try_from(d))
+        .collect::<Result<_, _>>()
+        .map_err(|_| PyValueError::new_err(format!("array shape {shape:?} is too large")))
+}
