@@ -140,26 +140,27 @@ P, N = vertices(4)
 @pytest.mark.parametrize(
     ("call", "exception", "words"),
     [
-        (lambda: gs.shade(P[:, :2], N, SCENE), ValueError, ["positions", "3 columns", "[4, 2]"]),
-        (lambda: gs.shade(P[0], N, SCENE), ValueError, ["positions", "(3,)"]),
-        (lambda: gs.shade(P[None], N, SCENE), ValueError, ["positions", "(1, 4, 3)"]),
-        (lambda: gs.shade(P, N[:3], SCENE), ValueError, ["normals", "(4)", "3 rows"]),
-        (lambda: gs.shade(P.astype(np.int64), N, SCENE), TypeError, ["positions", "int64"]),
+        (lambda: gs.shade(P[:, :2], N, SCENE), ValueError, ["positions", "(..., 3)", "(4, 2)"]),
+        (lambda: gs.shade(P[:, 0], N, SCENE), ValueError, ["positions", "(4,)"]),
+        (
+            lambda: gs.shade(P[None, :3], N, SCENE),
+            ValueError,
+            ["broadcast", "positions (1, 3, 3)", "normals (4, 3)"],
+        ),
+        (lambda: gs.shade(P, N[:3], SCENE), ValueError, ["broadcast", "normals (3, 3)"]),
         (lambda: gs.shade(P, N.astype(np.complex128), SCENE), TypeError, ["normals", "complex128"]),
-        (lambda: gs.shade(P, N.astype(np.int32), SCENE), TypeError, ["normals", "int32"]),
         (lambda: gs.shade(P.astype(np.longdouble), N, SCENE), TypeError, ["positions", "float"]),
         (lambda: gs.shade([["a", "b", "c"]], [[0, 0, 1]], SCENE), TypeError, ["positions"]),
         (lambda: gs.shade(P, N, "scene"), TypeError, ["scene", "Scene"]),
         (
             lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 2))),
             ValueError,
-            ["colors", "(4, 3) or (4, 4)"],
+            ["colors", "(..., 3) or (..., 4)", "(4, 2)"],
         ),
-        (lambda: gs.shade(P, N, SCENE, colors=np.ones((5, 3))), ValueError, ["colors", "(4, 3)"]),
         (
-            lambda: gs.shade(P, N, SCENE, colors=np.ones((4, 3), int) > 0),
-            TypeError,
-            ["colors", "bool"],
+            lambda: gs.shade(P, N, SCENE, colors=np.ones((5, 3))),
+            ValueError,
+            ["broadcast", "colors (5, 3)"],
         ),
         (
             lambda: gs.shade(P, N, SCENE, color_material="diffuse"),
@@ -253,7 +254,7 @@ P, N = vertices(4)
         (
             lambda: gs.Material(ambient=np.ones((2, 3))),
             ValueError,
-            ["ambient", "(3,) or (4,)", "(2, 4)"],
+            ["ambient", "(3,) or (4,)", "(2, 3)"],
         ),
         (
             lambda: gs.Scene(specular="cook-torrance"),

@@ -235,7 +235,6 @@ def test_colours_of_the_wrong_width_are_named() -> None:
         (lambda: np.zeros((10, 4), order="F"), ValueError, ["out", "C-contiguous"]),
         (lambda: np.zeros((10, 8))[:, ::2], ValueError, ["out", "C-contiguous"]),
         (lambda: misaligned(np.zeros((10, 4))), ValueError, ["out", "aligned"]),
-        (lambda: np.zeros((10, 4)).copy().setflags(write=False), TypeError, ["out"]),
         (lambda: [[0.0] * 4] * 10, TypeError, ["out", "numpy array"]),
     ],
 )
@@ -404,7 +403,7 @@ def test_defaults_are_gl_s_and_shown_in_the_signatures() -> None:
         (lambda: gs.shade(UP, UP, SUN, accuracy="best"), ValueError, ["accuracy", "best"]),
         (lambda: gs.shade(UP, UP, SUN, modelview=np.eye(3)), ValueError, ["modelview", "(4, 4)"]),
         (lambda: gs.shade(UP, UP, "scene"), TypeError, ["scene"]),
-        (lambda: gs.vertex_normals(UP, [[0, 0, 1]]), IndexError, ["faces", "1"]),
+        (lambda: gs.vertex_normals(UP, [[0, 0, 1]]), IndexError, ["face 0", "vertex 1"]),
         (lambda: gs.vertex_normals(UP, [[0, 0, 0.5]]), TypeError, ["faces", "integer"]),
         (lambda: gs.vertex_normals(UP, [[0, 0]]), ValueError, ["faces", "(m, 3)"]),
         (lambda: gs.face_normals(np.zeros((3, 2)), [[0, 1, 2]]), ValueError, ["vertices"]),
@@ -623,8 +622,8 @@ rng = np.random.default_rng(0)
 {setup}
 gs.shade(np.zeros((100_000, 3)), np.ones((100_000, 3)), gs.Scene(lights=[gs.Light()]))
 used = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
-with open("/proc/self/statm") as f:
-    virtual = int(f.read().split()[0]) * resource.getpagesize()
+with open("/proc/self/statm") as statm:
+    virtual = int(statm.read().split()[0]) * resource.getpagesize()
 resource.setrlimit(resource.RLIMIT_AS, (virtual + (256 << 20), resource.RLIM_INFINITY))
 try:
     {call}

@@ -21,6 +21,7 @@ def rebuilt(lights: gs.Lights, **changes: Any) -> gs.Lights:
     names = inspect.signature(gs.Light).parameters
     return gs.Lights(**{name: changes.get(name, getattr(lights, name)) for name in names})
 
+
 DTYPES = st.sampled_from([np.float32, np.float64])
 
 

@@ -496,7 +496,7 @@ TRI = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
 @pytest.mark.parametrize(
     ("kwargs", "error", "match"),
     [
-        ({"width": 0}, ValueError, "width must be positive"),
+        ({"width": 0}, ValueError, r"width must be in \[1, 16384\], got 0"),
         ({"height": 20000}, ValueError, r"height must be in \[1, 16384\]"),
         ({"width": 2.5}, TypeError, "width must be an integer"),
         ({"shading": "toon"}, ValueError, "shading must be 'flat', 'gouraud' or 'phong'"),
@@ -521,9 +521,9 @@ def test_bad_arguments_are_named(kwargs: dict[str, Any], error: type, match: str
 def test_bad_meshes_cameras_and_types() -> None:
     with pytest.raises(IndexError, match="face 1 refers to vertex 3"):
         gs.render(TRI, [[0, 1, 2], [0, 1, 3]], SHINY, gs.Camera())
-    with pytest.raises(TypeError, match="vertices must be a float32 or float64 array"):
-        gs.render(TRI.astype(int), [[0, 1, 2]], SHINY, gs.Camera())
-    with pytest.raises(ValueError, match="vertices must be a 2-d array"):
+    with pytest.raises(TypeError, match="vertices must be real numbers"):
+        gs.render(TRI.astype(complex), [[0, 1, 2]], SHINY, gs.Camera())
+    with pytest.raises(ValueError, match=r"vertices must have shape \(n, 3\)"):
         gs.render(TRI[0], [[0, 1, 2]], SHINY, gs.Camera())
     with pytest.raises(TypeError, match="faces must be an integer array"):
         gs.render(TRI, [[0.0, 1, 2]], SHINY, gs.Camera())
@@ -543,7 +543,7 @@ def test_bad_meshes_cameras_and_types() -> None:
         gs.Camera.look_at((0, 0, 1), fovy=180)
     with pytest.raises(ValueError, match="near and far must satisfy"):
         gs.Camera.look_at((0, 0, 1), near=2, far=1)
-    with pytest.raises(ValueError, match="left and right must differ"):
+    with pytest.raises(ValueError, match="aspect must be finite and > 0"):
         gs.Camera.look_at_orthographic((0, 0, 1), height=2, aspect=0)
     with pytest.raises(ValueError, match="eye must have shape"):
         gs.Camera.look_at((0, 1))

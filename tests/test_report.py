@@ -1,11 +1,13 @@
 """``python -m glshade report``: its reference is the GL equation, its rows hold the README's
 per-mode bounds, and it writes the Markdown table and the PNG plot."""
 
+import inspect
 from pathlib import Path
 
 import numpy as np
 import pytest
 
+import glshade as gs
 from gl_reference import RefScene, gl_lighting
 from glshade import __main__ as cli
 from glshade._report import MODES, measure, reference_shade, report_scenes, report_vertices
@@ -23,7 +25,7 @@ def test_the_long_double_reference_is_the_gl_equation(name: str) -> None:
     scene = report_scenes()[name]
     p, n = report_vertices(name, 3_000)
     lights = [
-        {key: np.asarray(getattr(scene.lights, key))[i] for key in scene.lights.__annotations__}
+        {key: getattr(scene.lights, key)[i] for key in inspect.signature(gs.Light).parameters}
         for i in range(len(scene.lights))
     ]
     m = scene.material

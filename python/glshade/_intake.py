@@ -179,7 +179,7 @@ def _mapped_file(a: object) -> str | None:
     """The file `a`'s memory maps ("" when it is mapped from a file glshade cannot name)."""
     seen = 0
     while a is not None and seen < 64:
-        if isinstance(a, np.memmap) and isinstance(a.filename, str):
+        if isinstance(a, np.memmap) and isinstance(a.filename, (str, os.PathLike)):
             return os.path.realpath(a.filename)
         if isinstance(a, mmap.mmap):
             return ""
@@ -193,7 +193,8 @@ def may_share(a: NDArray[Any], b: NDArray[Any]) -> bool:
     effort), or two maps of one file (at different addresses, which numpy cannot see)."""
     if np.may_share_memory(a, b):
         try:
-            return bool(np.shares_memory(a, b, max_work=_OVERLAP_WORK))
+            # numpy's stubs list only -1 and 0, but any positive effort bound is accepted.
+            return bool(np.shares_memory(a, b, max_work=_OVERLAP_WORK))  # type: ignore[arg-type]
         except np.exceptions.TooHardError:
             return True
     file_a = _mapped_file(a)
@@ -214,12 +215,13 @@ def out_array(
         raise TypeError(f"out must have dtype {dtype} (native byte order), got {out.dtype}")
     if out.shape != shape:
         raise ValueError(f"out must have shape {shape}, got {out.shape}")
-    for flag_name, message in (
-        ("C_CONTIGUOUS", "C-contiguous"),
-        ("ALIGNED", "aligned"),
-        ("WRITEABLE", "writeable"),
+    flags = out.flags
+    for ok, message in (
+        (flags.c_contiguous, "C-contiguous"),
+        (flags.aligned, "aligned"),
+        (flags.writeable, "writeable"),
     ):
-        if not out.flags[flag_name]:
+        if not ok:
             raise ValueError(f"out must be {message}, got an array that is not")
     for name, a in inputs.items():
         if may_share(out, a):

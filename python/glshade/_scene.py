@@ -130,13 +130,14 @@ class Lights:
         """``lights[i]`` is a `Light`; a slice, integer array or boolean mask gives `Lights`."""
         try:
             picked = np.arange(len(self))[index]
-        except IndexError:
-            raise IndexError(
-                f"light index {index!r} is out of range for {len(self)} lights"
-            ) from None
-        except (TypeError, ValueError) as e:
+        except IndexError as e:
+            if "out of bounds" in str(e):
+                raise IndexError(
+                    f"light index {index!r} is out of range for {len(self)} lights"
+                ) from None
             raise TypeError(
-                f"lights can be indexed by an integer, slice or array, got {index!r}: {e}"
+                f"lights are indexed by an integer, a slice, an integer array or a boolean "
+                f"mask, got {index!r}"
             ) from None
         if np.ndim(picked) == 0:
             return Light._wrap(self._native.take([int(picked)]))

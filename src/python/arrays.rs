@@ -67,9 +67,12 @@ pub fn rows<'a, T: Element, const K: usize>(
             "{name} must have shape (..., {K}), got {shape:?}"
         )));
     }
+    // as_slice also takes Fortran order, which would read the values scrambled.
     let data = array
         .as_slice()
-        .map_err(|_| PyValueError::new_err(format!("{name} must be C-contiguous and aligned")))?;
+        .ok()
+        .filter(|_| array.is_c_contiguous())
+        .ok_or_else(|| PyValueError::new_err(format!("{name} must be C-contiguous and aligned")))?;
     Ok(data.as_chunks::<K>().0)
 }
 

@@ -22,7 +22,11 @@ mod shading;
 
 /// A row-major (4, 4) array (as numpy prints matrices) as a column-major `DMat4`.
 fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
-    let values: &[f64] = m.as_slice().unwrap_or(&[]);
+    let values: &[f64] = m
+        .as_slice()
+        .ok()
+        .filter(|_| m.is_c_contiguous())
+        .unwrap_or(&[]);
     let rows: [f64; 16] = values
         .try_into()
         .ok()
