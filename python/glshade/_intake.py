@@ -71,39 +71,47 @@ def compute_dtype(*arrays: NDArray[Any]) -> np.dtype[Any]:
 
 def ready(a: NDArray[Any], dtype: np.dtype[Any]) -> FloatArray:
     """`a` as what the native module reads: C-contiguous, aligned, native order, `dtype`."""
-    if a.dtype is dtype and a.flags.c_contiguous and a.flags.aligned:
+    if a.dtype is dtype and a.flags.carray:
         return a
     result: FloatArray = np.require(a, dtype, ("C", "A"))
     return result
 
 
-def _describe(widths: tuple[int, ...]) -> str:
-    return " or ".join(f"(..., {w})" for w in widths)
+_WIDTHS = {"positions": (3,), "normals": (3,), "colors": (3, 4)}
 
 
-def vertex_arrays(
-    given: dict[str, NDArray[Any]], widths: dict[str, tuple[int, ...]]
-) -> tuple[tuple[int, ...], dict[str, NDArray[Any]]]:
-    """The leading shape that arrays of shape (..., width) broadcast to, and each array
-    broadcast to it (views, not copies); a ValueError names the arrays that do not fit."""
+def vertices(
+    positions: ArrayLike, normals: ArrayLike, colors: ArrayLike | None
+) -> tuple[tuple[int, ...], FloatArray, FloatArray, FloatArray | None]:
+    """The vertex arrays of `shade` as the native module reads them, broadcast against each
+    other, and their common leading shape: (..., 3) positions and normals, (..., 3|4) colours.
+    A ValueError names the arrays whose shapes do not fit."""
+    p, n = array(positions, "positions"), array(normals, "normals")
+    dtype = compute_dtype(p, n)
+    shape = p.shape
+    if colors is None and shape == n.shape and shape and shape[-1] == 3:
+        return shape[:-1], ready(p, dtype), ready(n, dtype), None
+    given = {"positions": p, "normals": n}
+    if colors is not None:
+        given["colors"] = array(colors, "colors")
     leading = []
     for name, a in given.items():
-        if a.ndim == 0 or a.shape[-1] not in widths[name]:
-            raise ValueError(
-                f"{name} must have shape {_describe(widths[name])}, got shape {a.shape}"
-            )
+        if a.ndim == 0 or a.shape[-1] not in _WIDTHS[name]:
+            expected = " or ".join(f"(..., {w})" for w in _WIDTHS[name])
+            raise ValueError(f"{name} must have shape {expected}, got shape {a.shape}")
         leading.append(a.shape[:-1])
-    first = leading[0]
-    if all(s == first for s in leading):
-        return first, given
     try:
-        shape = np.broadcast_shapes(*leading)
+        common = np.broadcast_shapes(*leading)
     except ValueError:
         found = ", ".join(f"{name} {a.shape}" for name, a in given.items())
         raise ValueError(
             f"the leading shapes of {', '.join(given)} must broadcast together, got {found}"
         ) from None
-    return shape, {name: np.broadcast_to(a, (*shape, a.shape[-1])) for name, a in given.items()}
+    ready_arrays = [
+        ready(np.broadcast_to(a, (*common, a.shape[-1])), dtype) for a in given.values()
+    ]
+    c = ready_arrays[2] if colors is not None else None
+    return common, ready_arrays[0], ready_arrays[1], c
 
 
 def rows(
@@ -188,16 +196,16 @@ def _mapped_file(a: object) -> str | None:
     return None
 
 
-def may_share(a: NDArray[Any], b: NDArray[Any]) -> bool:
-    """Whether `a` and `b` may share memory: overlapping addresses (exactly, within a bounded
-    effort), or two maps of one file (at different addresses, which numpy cannot see)."""
+def may_share(a: NDArray[Any], b: NDArray[Any], file_a: str | None) -> bool:
+    """Whether `a` (which maps `file_a`, see `_mapped_file`) and `b` may share memory:
+    overlapping addresses (exactly, within a bounded effort), or two maps of one file (at
+    different addresses, which numpy cannot see)."""
     if np.may_share_memory(a, b):
         try:
             # numpy's stubs list only -1 and 0, but any positive effort bound is accepted.
             return bool(np.shares_memory(a, b, max_work=_OVERLAP_WORK))  # type: ignore[arg-type]
         except np.exceptions.TooHardError:
             return True
-    file_a = _mapped_file(a)
     if file_a is None:
         return False
     file_b = _mapped_file(b)
@@ -205,7 +213,10 @@ def may_share(a: NDArray[Any], b: NDArray[Any]) -> bool:
 
 
 def out_array(
-    out: object, shape: tuple[int, ...], dtype: np.dtype[Any], inputs: dict[str, NDArray[Any]]
+    out: object,
+    shape: tuple[int, ...],
+    dtype: np.dtype[Any],
+    inputs: dict[str, NDArray[Any] | None],
 ) -> FloatArray:
     """`out` checked to be exactly the result's array: `dtype` in native order, `shape`,
     C-contiguous, aligned and writeable, sharing no memory with any of `inputs`."""
@@ -223,8 +234,9 @@ def out_array(
     ):
         if not ok:
             raise ValueError(f"out must be {message}, got an array that is not")
+    mapped = _mapped_file(out)
     for name, a in inputs.items():
-        if may_share(out, a):
+        if a is not None and may_share(out, a, mapped):
             raise ValueError(
                 f"out and {name} share memory (or may: both map one file): the result would "
                 f"overwrite {name} while it is read; pass a separate out"

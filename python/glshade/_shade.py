@@ -9,15 +9,12 @@ from numpy.typing import ArrayLike
 from . import _glshade
 from ._intake import (
     FloatArray,
-    array,
     choice,
-    compute_dtype,
     flag,
     matrix,
     optional_choice,
     out_array,
-    ready,
-    vertex_arrays,
+    vertices,
 )
 from ._scene import Scene
 
@@ -25,7 +22,6 @@ __all__ = ["shade"]
 
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
 Accuracy = Literal["fast", "exact"]
-_WIDTHS = {"positions": (3,), "normals": (3,), "colors": (3, 4)}
 
 
 def shade(
@@ -115,26 +111,21 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    given = {"positions": array(positions, "positions"), "normals": array(normals, "normals")}
-    widths = _WIDTHS
-    if colors is not None:
-        given["colors"] = array(colors, "colors")
+    leading, p, n, c = vertices(positions, normals, colors)
+    if c is not None:
         color_material = color_material or "ambient_and_diffuse"
-    dtype = compute_dtype(given["positions"], given["normals"])
-    leading, given = vertex_arrays(given, widths)
-    inputs = {name: ready(a, dtype) for name, a in given.items()}
     if out is not None:
         k = len(scene.outputs)
         shape = (*((k,) if k > 1 else ()), *leading, 4)
-        out = out_array(out, shape, dtype, inputs)
+        out = out_array(out, shape, p.dtype, {"positions": p, "normals": n, "colors": c})
     result: FloatArray = _glshade.shade(
-        inputs["positions"],
-        inputs["normals"],
+        p,
+        n,
         scene._native,
         None if modelview is None else matrix(modelview, "modelview"),
         flag(normalize, "normalize"),
         flag(rescale_normal, "rescale_normal"),
-        inputs.get("colors"),
+        c,
         optional_choice(color_material, "color_material"),
         choice(color_material_face, "color_material_face"),
         choice(accuracy, "accuracy"),
