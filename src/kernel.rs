@@ -15,6 +15,8 @@
 
 use std::ops::{Add, Sub};
 
+use crate::elementary::ElementaryLanes;
+use crate::float::Float;
 use crate::lanes::{
     normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes, V3,
 };
@@ -52,7 +54,7 @@ pub struct Scale<V: Lanes> {
     pub ln: V,
 }
 
-impl<V: Lanes> Scale<V> {
+impl<V: ElementaryLanes> Scale<V> {
     /// Length 1: a unit vector.
     #[inline(always)]
     pub fn unit() -> Self {
@@ -124,7 +126,7 @@ pub fn length_minus_one<V: Lanes>(v: V3<V>, length: V) -> (V, V::Mask) {
 /// power as `exp(s·ln(1 − x))`: the error stays a few ulp at any exponent instead of growing as
 /// s·ulp. The length of the vector `a` stands for enters through `scale` (see [`Scale`]).
 #[inline(always)]
-pub fn cos_pow<V: Lanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) -> V {
+pub fn cos_pow<V: ElementaryLanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) -> V {
     if s == V::T::ZERO {
         return V::splat(V::T::ONE);
     }
@@ -143,7 +145,7 @@ pub fn cos_pow<V: Lanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) 
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
 /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
 #[inline(always)]
-pub fn spot_factor<V: Lanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
+pub fn spot_factor<V: ElementaryLanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
     let axis = V3::splat(spot.direction);
     let c = to_vertex.dot(axis).max(V::splat(V::T::ZERO));
     let inside = c.ge(V::splat(spot.cos_cutoff));

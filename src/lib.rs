@@ -14,6 +14,7 @@ pub mod clip;
 pub mod dispatch;
 pub mod elementary;
 pub mod error;
+pub mod float;
 pub mod kernel;
 pub mod lanes;
 pub mod light;

@@ -4,12 +4,12 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
-use crate::dispatch::Scalar;
 use crate::error::Error;
-use crate::lanes::{Lanes, V3};
+use crate::float::{exponent, ldexp, Float};
+use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::real::{exponent, ldexp, normalize_and_length, normalize_or_zero, Real};
+use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
 
 /// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
@@ -42,7 +42,7 @@ fn cast<T: Real>(v: DVec3) -> [T; 3] {
 
 /// A spot light's cone, in the kernel's type.
 #[derive(Clone, Copy, Debug)]
-pub struct Spot<T: Real> {
+pub struct Spot<T: Float> {
     /// ŝ_dli, the unit spot direction.
     pub direction: [T; 3],
     /// cos(c_rli); exactly 0 for a 90° cutoff (f32 `cos(π/2)` is −4.4e-8, f64 +6.1e-17).

@@ -10,10 +10,11 @@ use std::mem::MaybeUninit;
 use rayon::prelude::*;
 
 use crate::alloc::try_with_capacity;
-use crate::dispatch::{InstructionSet, Isa, LaneWork};
+use crate::dispatch::{Isa, LaneWork};
 use crate::error::Error;
+use crate::float::Float;
 use crate::kernel::{Block, Kernel};
-use crate::lanes::{Lanes, MAX_LANES, V3};
+use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 use crate::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
