@@ -23,6 +23,7 @@ pub mod normals;
 mod pages;
 pub mod passes;
 pub mod plan;
+pub mod power;
 pub mod prepare;
 #[cfg(test)]
 mod property_tests;
