@@ -150,6 +150,7 @@ impl<T: Real> Transform<T> {
     ///
     /// # Errors
     /// As [`Transform::for_shading`].
+    #[cfg(test)]
     pub fn new(modelview: &DMat4, rescale_normal: bool) -> Result<Self, Error> {
         Self::for_shading(modelview, rescale_normal, false, true)
     }
