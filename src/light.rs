@@ -32,7 +32,7 @@ pub struct Light {
 }
 
 impl Default for Light {
-    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white, as DESIGN.md pins).
+    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white; README, Defaults).
     fn default() -> Self {
         Self {
             position: [0.0, 0.0, 1.0, 0.0],

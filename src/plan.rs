@@ -1,5 +1,5 @@
 //! What a scene needs computed, decided once per call, like the state key of Mesa's
-//! fixed-function vertex program (`ffvertex_prog.c`, notes/gl_semantics.md §2.1).
+//! fixed-function vertex program (`src/mesa/main/ffvertex_prog.c`).
 //!
 //! The kernel tests these flags once per block of vertices (uniform branches), so a term a
 //! scene does not need costs one predictable branch per block and nothing per vertex. Leaving
