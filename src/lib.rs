@@ -13,12 +13,13 @@
 //! [`look_at`], [`perspective`] and [`orthographic`], and the types of their arguments.
 //! [`Real`] is implemented for `f32` and `f64` only (its supertraits are internal).
 //!
-//! Layering (every module uses only modules of the lines above it): `error`, `float` (the scalar
-//! trait); `alloc`, `stop`, `light`, `material`, `clip`, `lanes` (the `Lanes` trait and the
-//! register sets); `pages`, `scene`, `raster`, `elementary` (`exp`/`ln` over lanes); `adjacency`,
-//! `real` (a float tied to its lanes), `power` (the spot and specular powers); `prepare`,
-//! `dispatch` (run-time instruction set), `triangle`, `visibility`; `plan`, `normals`,
-//! `camera`; `kernel` (the equation over lanes); `shade`, `mesh`; `passes`; `render`.
+//! Layering, bottom up (each group, between semicolons, uses only the groups before it):
+//! `error`, `float` (the scalar trait); `alloc`, `stop`, `light`, `material`, `clip`, `lanes`
+//! (the `Lanes` trait and the register sets); `pages`, `scene`, `raster`, `elementary`
+//! (`exp`/`ln` over lanes); `adjacency`, `real` (a float tied to its lanes), `power` (the spot
+//! and specular powers); `prepare`, `dispatch` (the run-time instruction set), `triangle`,
+//! `visibility`; `plan`, `normals`, `camera`; `kernel` (the equation over lanes); `shade`,
+//! `mesh`; `passes`; `render`.
 
 mod adjacency;
 mod alloc;
