@@ -1,8 +1,8 @@
 //! The instruction set the kernels run with, chosen at run time so one build uses AVX-512 or
 //! AVX2 where the CPU has them and SSE2 (or the target's baseline) elsewhere.
 //!
-//! The kernels are written once over [`Lanes`]; an [`InstructionSet`] names the register types
-//! they are instantiated with (four registers of 16 `f32` or 8 `f64` lanes with AVX-512, 8 or 4
+//! The kernels are written once over [`Lanes`]; an [`InstructionSet`] (in [`crate::lanes`], with
+//! the register types) names the register types they are instantiated with (four registers of 16 `f32` or 8 `f64` lanes with AVX-512, 8 or 4
 //! with AVX2, 4 or 2 with SSE2), and the work runs inside a function compiled with that set's
 //! target features.
 //! Every lane runs the same IEEE operations, so every instruction set gives the same bits (a
@@ -18,70 +18,12 @@ use std::cell::Cell;
 use std::marker::PhantomData;
 use std::sync::OnceLock;
 
+#[cfg(not(target_arch = "x86_64"))]
+use crate::lanes::Portable;
 #[cfg(target_arch = "x86_64")]
-use crate::lanes::x86;
-use crate::lanes::{Lanes, Pair};
+use crate::lanes::{Avx2, Avx512, Sse2};
+use crate::lanes::{InstructionSet, Lanes};
 use crate::real::Real;
-
-/// Four registers as one block: four independent chains of instructions for the CPU to
-/// overlap, since the polynomials of `exp` and `ln` are long chains of dependent operations
-/// (measured on Zen 5: 1.2 to 1.7 times the speed of one register with AVX-512, AVX2 and SSE2).
-pub(crate) type Quad<V> = Pair<Pair<V>>;
-
-/// The register types of one instruction set.
-pub trait InstructionSet {
-    /// Lanes of `f32`.
-    type F32: Lanes<T = f32>;
-    /// Lanes of `f64`.
-    type F64: Lanes<T = f64>;
-}
-
-/// SSE2, the x86-64 baseline.
-#[cfg(target_arch = "x86_64")]
-pub(crate) struct Sse2;
-
-#[cfg(target_arch = "x86_64")]
-impl InstructionSet for Sse2 {
-    type F32 = Quad<x86::F32x4>;
-    type F64 = Quad<x86::F64x2>;
-}
-
-/// AVX2 with FMA.
-#[cfg(target_arch = "x86_64")]
-pub(crate) struct Avx2;
-
-#[cfg(target_arch = "x86_64")]
-impl InstructionSet for Avx2 {
-    type F32 = Quad<x86::F32x8>;
-    type F64 = Quad<x86::F64x4>;
-}
-
-/// AVX-512 F, BW, DQ and VL.
-#[cfg(target_arch = "x86_64")]
-pub(crate) struct Avx512;
-
-#[cfg(target_arch = "x86_64")]
-impl InstructionSet for Avx512 {
-    type F32 = Quad<x86::F32x16>;
-    type F64 = Quad<x86::F64x8>;
-}
-
-/// Arrays for other CPUs, which LLVM vectorises as it can.
-#[cfg_attr(all(target_arch = "x86_64", not(test)), allow(dead_code))]
-pub(crate) struct Portable;
-
-impl InstructionSet for Portable {
-    type F32 = crate::lanes::Pack<f32, 8>;
-    type F64 = crate::lanes::Pack<f64, 4>;
-}
-
-/// One lane: the kernel's formulas applied to single values (the per-call constants).
-pub(crate) struct Scalar;
-
-impl InstructionSet for Scalar {
-    type F32 = crate::lanes::Pack<f32, 1>;
-    type F64 = crate::lanes::Pack<f64, 1>;
-}
 
 /// The baseline set of the target.
 #[cfg(target_arch = "x86_64")]

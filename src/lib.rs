@@ -5,50 +5,68 @@
 //! GL state as plain data, and writes RGBA rows. The optional `python` feature adds the binding.
 //!
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
-//! defaults (`notes/gl_semantics.md`), colours clamped to [0, 1] once, at the end.
+//! defaults (§2.14.1, every light's diffuse and specular white as for `GL_LIGHT0`: see the
+//! README's Defaults), colours clamped to [0, 1] once, at the end.
+//!
+//! The API is what the crate root re-exports: the entry points [`shade`], [`shade_uninit`],
+//! [`describe`], [`face_normals`], [`vertex_normals`] and [`render`], the camera matrices
+//! [`look_at`], [`perspective`] and [`orthographic`], and the types of their arguments.
+//! [`Real`] is implemented for `f32` and `f64` only (its supertraits are internal).
+//!
+//! Layering, bottom up (each group, between semicolons, uses only the groups before it):
+//! `error`, `float` (the scalar trait); `alloc`, `stop`, `light`, `material`, `clip`, `lanes`
+//! (the `Lanes` trait and the register sets); `pages`, `scene`, `raster`, `elementary`
+//! (`exp`/`ln` over lanes); `adjacency`, `real` (a float tied to its lanes), `power` (the spot
+//! and specular powers); `prepare`, `dispatch` (the run-time instruction set), `triangle`,
+//! `visibility`; `plan`, `normals`, `camera`; `kernel` (the equation over lanes); `shade`,
+//! `mesh`; `passes`; `render`.
 
 mod adjacency;
 mod alloc;
-pub mod camera;
-pub mod clip;
-pub mod dispatch;
-pub mod elementary;
-pub mod error;
-pub mod kernel;
-pub mod lanes;
-pub mod light;
-pub mod material;
-pub mod normals;
+mod camera;
+mod clip;
+mod dispatch;
+mod elementary;
+mod error;
+mod float;
+mod kernel;
+mod lanes;
+mod light;
+mod material;
+mod mesh;
+mod normals;
 mod pages;
-pub mod passes;
-pub mod plan;
-pub mod prepare;
+mod passes;
+mod plan;
+mod power;
+mod prepare;
 #[cfg(test)]
 mod property_tests;
 #[cfg(test)]
 mod range_tests;
-pub mod raster;
-pub mod real;
-pub mod render;
+mod raster;
+mod real;
+mod render;
 #[cfg(test)]
 mod robust_tests;
-pub mod scene;
-pub mod shade;
+mod scene;
+mod shade;
 #[cfg(test)]
 mod specialisation_tests;
-pub mod stop;
+mod stop;
 mod triangle;
-pub mod visibility;
+mod visibility;
 
-pub use camera::Camera;
+pub use camera::{look_at, orthographic, perspective, Camera};
 pub use error::{Error, ErrorKind};
-pub use light::Light;
-pub use material::{ColorMaterial, ColorMaterialMode, Face, Material};
+pub use light::{Light, LIGHT_ROW_LEN};
+pub use material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
+pub use mesh::Mesh;
 pub use normals::{face_normals, vertex_normals, Weighting};
-pub use plan::Plan;
 pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
-pub use render::{render, Mesh, RenderOptions, Shading};
+pub use real::Real;
+pub use render::{render, RenderOptions, Shading};
 pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit, VertexColors};
 pub use stop::Stop;

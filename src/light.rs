@@ -32,7 +32,7 @@ pub struct Light {
 }
 
 impl Default for Light {
-    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white, as DESIGN.md pins).
+    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white; README, Defaults).
     fn default() -> Self {
         Self {
             position: [0.0, 0.0, 1.0, 0.0],
@@ -49,9 +49,10 @@ impl Default for Light {
     }
 }
 
-/// The columns of one row of a light table, in order, with their widths: the layout the Python
-/// package packs `Lights` into.
-pub const LIGHT_LAYOUT: [(&str, usize); 10] = [
+/// The columns of one row of a light table, in order, with their widths: what
+/// [`Light::from_row`] reads (a test checks their sum against [`LIGHT_ROW_LEN`]).
+#[cfg(test)]
+const LIGHT_LAYOUT: [(&str, usize); 10] = [
     ("position", 4),
     ("ambient", 4),
     ("diffuse", 4),
@@ -64,7 +65,9 @@ pub const LIGHT_LAYOUT: [(&str, usize); 10] = [
     ("quadratic_attenuation", 1),
 ];
 
-/// The number of `f64` in one row of a light table (the sum of [`LIGHT_LAYOUT`]'s widths).
+/// The number of `f64` in one row of a light table: position, ambient, diffuse and specular
+/// (4 each), spot_direction (3), spot_exponent, spot_cutoff and the constant, linear and
+/// quadratic attenuation (1 each), in that order.
 pub const LIGHT_ROW_LEN: usize = 24;
 
 fn take<const K: usize>(row: &[f64], at: &mut usize) -> [f64; K] {
@@ -75,7 +78,7 @@ fn take<const K: usize>(row: &[f64], at: &mut usize) -> [f64; K] {
 }
 
 impl Light {
-    /// Reads one row laid out as [`LIGHT_LAYOUT`]; `row` must hold [`LIGHT_ROW_LEN`] values.
+    /// Reads one row laid out as [`LIGHT_ROW_LEN`] describes.
     ///
     /// No range check happens here: see [`Light::validate`].
     pub fn from_row(row: &[f64; LIGHT_ROW_LEN]) -> Self {

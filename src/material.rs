@@ -32,8 +32,10 @@ impl Default for Material {
     }
 }
 
-/// The layout of a material row, as for [`crate::light::LIGHT_LAYOUT`].
-pub const MATERIAL_LAYOUT: [(&str, usize); 5] = [
+/// The columns of a material row, in order, with their widths (a test checks their sum against
+/// [`MATERIAL_ROW_LEN`]).
+#[cfg(test)]
+const MATERIAL_LAYOUT: [(&str, usize); 5] = [
     ("ambient", 4),
     ("diffuse", 4),
     ("specular", 4),
@@ -41,11 +43,12 @@ pub const MATERIAL_LAYOUT: [(&str, usize); 5] = [
     ("shininess", 1),
 ];
 
-/// The number of `f64` in a material row.
+/// The number of `f64` in a material row: ambient, diffuse, specular and emission (4 each),
+/// then shininess (1).
 pub const MATERIAL_ROW_LEN: usize = 17;
 
 impl Material {
-    /// Reads a row laid out as [`MATERIAL_LAYOUT`]; see [`Material::validate`] for the ranges.
+    /// Reads a row laid out as [`MATERIAL_ROW_LEN`] describes; see [`Material::validate`] for the ranges.
     pub fn from_row(row: &[f64; MATERIAL_ROW_LEN]) -> Self {
         let rgba = |k: usize| -> [f64; 4] { std::array::from_fn(|i| row[4 * k + i]) };
         Self {

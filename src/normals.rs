@@ -106,11 +106,11 @@ fn corners<T: Real>(vertices: &[[T; 3]], face: [i64; 3]) -> [DVec3; 3] {
 }
 
 /// Writes the unit normal of every face into `out` (one row per face); degenerate faces get
-/// (0, 0, 0). `stop` is polled before every task of [`ROWS_PER_TASK`] faces.
+/// (0, 0, 0). `stop` is polled before every task of `ROWS_PER_TASK` (4096) faces.
 ///
 /// # Errors
-/// An index error from [`check_faces`], a value error when `out` does not have one row per
-/// face, or [`Error::interrupted`] when `stop` was requested before the call finished.
+/// An index error for an index outside the vertices, a value error when `out` does not have
+/// one row per face, or [`Error::interrupted`] when `stop` was requested before the call finished.
 pub fn face_normals<T: Real>(
     vertices: &[[T; 3]],
     faces: &[[i64; 3]],
@@ -240,13 +240,13 @@ fn angle_terms<T: Real>(
 
 /// Writes the normal of every vertex into `out` (one row per vertex): the normalised sum of its
 /// faces' contributions under `weighting`, or (0, 0, 0) for a vertex that no face uses, whose
-/// faces are all degenerate, or whose contributions cancel (see [`CANCELLED_ULPS`]). Sums run in
-/// `f64` in face order. `stop` is polled before every task of [`ROWS_PER_TASK`] faces or
+/// faces are all degenerate, or whose contributions cancel (`CANCELLED_ULPS`, 8 ulp). Sums run in
+/// `f64` in face order. `stop` is polled before every task of `ROWS_PER_TASK` (4096) faces or
 /// vertices, and in the sequential adjacency build.
 ///
 /// # Errors
-/// An index error from [`check_faces`], a value error when `out` does not have one row per
-/// vertex or there are more faces than the adjacency can hold ([`Adjacency::MAX_FACES`]), a
+/// An index error for an index outside the vertices, a value error when `out` does not have
+/// one row per vertex or there are more faces than the adjacency can hold (`u32::MAX / 3`), a
 /// memory error when the scratch buffers (24 to 60 bytes a face) cannot be allocated, or
 /// [`Error::interrupted`] when `stop` was requested before the call finished.
 pub fn vertex_normals<T: Real>(

@@ -1,10 +1,10 @@
 //! What a scene needs computed, decided once per call, like the state key of Mesa's
-//! fixed-function vertex program (`ffvertex_prog.c`, notes/gl_semantics.md §2.1).
+//! fixed-function vertex program (`src/mesa/main/ffvertex_prog.c`).
 //!
 //! The kernel tests these flags once per block of vertices (uniform branches), so a term a
 //! scene does not need costs one predictable branch per block and nothing per vertex. Leaving
-//! a term out never changes a result: [`Plan::general`] computes every term for every light
-//! and must give the same bits (a test checks every feature subset).
+//! a term out never changes a result: the tests' `Plan::general` computes every term for every
+//! light and must give the same bits (a test checks every feature subset).
 
 use std::fmt;
 
@@ -138,6 +138,7 @@ impl Plan {
 
     /// Every term of every light, whether the scene needs it or not: the reference the
     /// specialised plans are checked against, bit for bit.
+    #[cfg(test)]
     pub fn general<T: Real>(prepared: &Prepared<T>) -> Self {
         let lean = Self::new(prepared);
         let all = |light: &LightPlan| LightPlan {

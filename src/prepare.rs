@@ -4,15 +4,16 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
-use crate::dispatch::Scalar;
 use crate::error::Error;
-use crate::lanes::{Lanes, V3};
+use crate::float::{exponent, ldexp};
+use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::real::{exponent, ldexp, normalize_and_length, normalize_or_zero, Real};
+use crate::power::{spot_factor, Spot};
+use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
 
-/// Each of the three RGB values of `c`, saturated at ±[`Real::COLOR_SATURATION`] and rounded
+/// Each of the three RGB values of `c`, saturated at ±[`Float::COLOR_SATURATION`](crate::float::Float::COLOR_SATURATION) and rounded
 /// to `T`.
 #[inline]
 fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
@@ -38,17 +39,6 @@ fn saturate<T: Real>(x: f64) -> T {
 /// Rounds an `f64` vector to the kernel's type.
 fn cast<T: Real>(v: DVec3) -> [T; 3] {
     v.to_array().map(T::from_f64)
-}
-
-/// A spot light's cone, in the kernel's type.
-#[derive(Clone, Copy, Debug)]
-pub struct Spot<T: Real> {
-    /// ŝ_dli, the unit spot direction.
-    pub direction: [T; 3],
-    /// cos(c_rli); exactly 0 for a 90° cutoff (f32 `cos(π/2)` is −4.4e-8, f64 +6.1e-17).
-    pub cos_cutoff: T,
-    /// s_rli.
-    pub exponent: T,
 }
 
 /// Where a light's rays come from.
@@ -160,6 +150,7 @@ impl<T: Real> Transform<T> {
     ///
     /// # Errors
     /// As [`Transform::for_shading`].
+    #[cfg(test)]
     pub fn new(modelview: &DMat4, rescale_normal: bool) -> Result<Self, Error> {
         Self::for_shading(modelview, rescale_normal, false, true)
     }
@@ -372,8 +363,8 @@ fn eye_point<T: Real>(h: [f64; 4], what: impl Fn() -> String) -> Result<[T; 3], 
     }
 }
 
-/// True when a call on `scene` reads positions (a positional light or a local viewer), as
-/// [`crate::plan::Plan`] decides.
+/// True when a call on `scene` reads positions (a positional light or a local viewer), as the
+/// call's plan decides from the prepared lights and viewer.
 fn reads_positions(scene: &Scene) -> bool {
     scene.viewer[3] != 0.0 || scene.lights.iter().any(|l| !l.is_directional())
 }
@@ -405,7 +396,7 @@ fn prepare_light<T: Real>(
         let vp = cast::<T>(vp);
         let spot = spot.map_or(T::ONE, |s| {
             let to_vertex = -V3::<T::Vector<Scalar>>::splat(vp);
-            crate::kernel::spot_factor(&s, to_vertex).lane(0)
+            spot_factor(&s, to_vertex).lane(0)
         });
         Source::Directional { vp, halfway, spot }
     } else {
@@ -488,7 +479,6 @@ impl<T: Real> Prepared<T> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::kernel::spot_factor;
 
     use crate::lanes::Pack;
 

@@ -334,7 +334,7 @@ fn draw<T: Real>(
     let faces: Vec<[i64; 3]> = (0..i64::try_from(vertices.len() / 3).unwrap())
         .map(|f| [3 * f, 3 * f + 1, 3 * f + 2])
         .collect();
-    let mesh = crate::render::Mesh {
+    let mesh = crate::mesh::Mesh {
         vertices,
         faces: &faces,
         normals: None,

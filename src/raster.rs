@@ -100,7 +100,7 @@ pub struct Viewport {
 }
 
 impl Viewport {
-    /// Checks that the width and height are in [1, [`MAX_SIZE`]].
+    /// Checks that the width and height are in [1, `MAX_SIZE`] (16384).
     ///
     /// # Errors
     /// A value error naming `width` or `height`.

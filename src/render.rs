@@ -12,6 +12,7 @@ use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::error::Error;
 use crate::material::ColorMaterial;
+use crate::mesh::Mesh;
 use crate::normals::{check_faces, vertex_normals, Weighting};
 use crate::pages::Zeroed;
 use crate::passes::{Frame, Pass};
@@ -55,20 +56,6 @@ impl Shading {
             ))),
         }
     }
-}
-
-/// A triangle mesh in model coordinates.
-#[derive(Clone, Copy, Debug)]
-pub struct Mesh<'a, T> {
-    /// Vertex positions, (n, 3).
-    pub vertices: &'a [[T; 3]],
-    /// Vertex indices of each triangle, (m, 3); counter-clockwise is the front.
-    pub faces: &'a [[i64; 3]],
-    /// Normals: one per vertex for Gouraud and Phong, one per face for flat shading; `None`
-    /// computes them (angle-weighted vertex normals, or face normals).
-    pub normals: Option<&'a [[T; 3]]>,
-    /// Per-vertex colours for `GL_COLOR_MATERIAL`, (n, 3) or (n, 4).
-    pub colors: Option<VertexColors<'a, T>>,
 }
 
 /// Everything of a render besides the scene, the mesh and the camera.

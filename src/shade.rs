@@ -10,10 +10,11 @@ use std::mem::MaybeUninit;
 use rayon::prelude::*;
 
 use crate::alloc::try_with_capacity;
-use crate::dispatch::{InstructionSet, Isa, LaneWork};
+use crate::dispatch::{Isa, LaneWork};
 use crate::error::Error;
+use crate::float::Float;
 use crate::kernel::{Block, Kernel};
-use crate::lanes::{Lanes, MAX_LANES, V3};
+use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 use crate::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
@@ -214,7 +215,7 @@ fn check_arrays<T: Real>(
 /// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
 /// [`Accuracy::Exact`] in `f64` whatever `T` is.
 ///
-/// `stop` is polled before every task of [`ROWS_PER_TASK`] rows; once it is requested the
+/// `stop` is polled before every task of `ROWS_PER_TASK` (8192) rows; once it is requested the
 /// remaining tasks are skipped and `out` is left partly written.
 ///
 /// # Errors
@@ -376,7 +377,7 @@ pub(crate) fn run<T: Real>(
 }
 
 /// The one-line description of what `shade` computes for `scene` and `options` in `T`: the
-/// arithmetic, the instruction set and the [`Plan`].
+/// arithmetic, the instruction set and the plan (which terms of which lights are computed).
 ///
 /// # Errors
 /// As [`shade`] for invalid options.

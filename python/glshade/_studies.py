@@ -164,7 +164,7 @@ def gouraud_vs_phong(
     highlight of shininess 64 (material diffuse 0.7, specular 1) and rendered at `size` x `size`
     in float32 with both shadings, each timed as the median of `repeat` renders. Gouraud's error
     follows s * delta^2 / 8 for a highlight across an edge whose normals differ by delta
-    (notes/numerics.md section 5): it falls fourfold with each subdivision, which halves delta.
+    (cos^s has curvature s at its peak): it falls fourfold with each subdivision, halving delta.
 
     Parameters
     ----------

@@ -13,9 +13,10 @@ use super::scene::Scene;
 use super::{faces, matrix};
 use crate::camera::Camera;
 use crate::material::ColorMaterial;
+use crate::mesh::Mesh;
 use crate::raster::{Cull, Viewport};
 use crate::real::Real;
-use crate::render::{Mesh, RenderOptions, Shading};
+use crate::render::{RenderOptions, Shading};
 
 fn render_typed<'py, T: Element + Real>(
     py: Python<'py>,

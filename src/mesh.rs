@@ -1,0 +1,17 @@
+//! The triangle mesh a render draws, apart from the renderer so that its passes can read it.
+
+use crate::kernel::VertexColors;
+
+/// A triangle mesh in model coordinates.
+#[derive(Clone, Copy, Debug)]
+pub struct Mesh<'a, T> {
+    /// Vertex positions, (n, 3).
+    pub vertices: &'a [[T; 3]],
+    /// Vertex indices of each triangle, (m, 3); counter-clockwise is the front.
+    pub faces: &'a [[i64; 3]],
+    /// Normals: one per vertex for Gouraud and Phong, one per face for flat shading; `None`
+    /// computes them (angle-weighted vertex normals, or face normals).
+    pub normals: Option<&'a [[T; 3]]>,
+    /// Per-vertex colours for `GL_COLOR_MATERIAL`, (n, 3) or (n, 4).
+    pub colors: Option<VertexColors<'a, T>>,
+}
