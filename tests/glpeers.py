@@ -147,7 +147,7 @@ def _compat() -> CompatContext:
         raise RuntimeError("eglInitialize failed")
     if not EGL.eglBindAPI(EGL.EGL_OPENGL_API):
         raise RuntimeError("eglBindAPI(EGL_OPENGL_API) failed")
-    # No profile mask and version 2.1: the compatibility profile (notes/peers.md section 3).
+    # No profile mask and version 2.1: the compatibility profile.
     attributes = (EGL.EGLint * 5)(
         EGL.EGL_CONTEXT_MAJOR_VERSION, 2, EGL.EGL_CONTEXT_MINOR_VERSION, 1, EGL.EGL_NONE
     )

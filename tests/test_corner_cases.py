@@ -1,5 +1,5 @@
-"""The corner cases of GL 2.1 section 2.14.1 (notes/gl_semantics.md section 1.11), each term of
-the equation alone and combined, and the conventions DESIGN.md pins where GL says "undefined".
+"""The corner cases of GL 2.1 section 2.14.1, each term of
+the equation alone and combined, and the README's conventions where GL says "undefined".
 
 Expected values are worked out by hand from the equation; where a case is easier to state as
 "equals the float64 transcription", the transcription in gl_reference.py is the oracle.
@@ -141,7 +141,7 @@ def test_all_terms_combined_is_their_sum(dtype: type) -> None:
     assert total[3] == np.float64(0.9).astype(dtype)
 
 
-# --- notes/gl_semantics.md section 1.11 ----------------------------------------------------
+# --- the corner cases of section 2.14.1 ----------------------------------------------------
 
 
 def lit_scene(**material: Any) -> gs.Scene:

@@ -19,7 +19,7 @@ def test_gouraud_error_falls_as_the_sphere_is_refined() -> None:
     for key in ("max_error", "mean_error", "levels8_wrong"):
         values = [r[key] for r in rows]
         assert all(a > b for a, b in itertools.pairwise(values)), (key, values)
-    # The mean error follows delta^2: about a quarter per level (numerics.md section 5).
+    # The mean error follows delta^2: about a quarter per level (cos^s has curvature s at its peak).
     mean = np.array([r["mean_error"] for r in rows])
     assert (mean[1:] / mean[:-1] < 0.5).all(), mean
     assert all(r["gouraud_ms"] > 0 and r["phong_ms"] > 0 for r in rows)

@@ -1,7 +1,7 @@
 """`render`'s depth and coverage against pyrender's (Mesa llvmpipe through EGL).
 
 pyrender always renders with 4x MSAA and reads depth back from sample 0, which lies off the
-pixel centre (peers.md §2): at (-1/8, -3/8) pixel in GL window coordinates (y up; (-1/8, +3/8)
+pixel centre: at (-1/8, -3/8) pixel in GL window coordinates (y up; (-1/8, +3/8)
 in image rows). glshade samples pixel centres, so its projection is shifted by the opposite
 offset to look through the same points. pyrender culls back faces, so glshade does too. Its
 depth buffer has 24 bits and comes back

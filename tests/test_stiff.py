@@ -1,4 +1,4 @@
-"""The stiff and extreme cases of notes/numerics.md, each against the 50-digit mpmath oracle of
+"""The stiff and extreme cases of the README's table, each against the 50-digit mpmath oracle of
 `mp_reference.py`, in both dtypes and both accuracy modes, with its bound written beside it.
 
 Every case checks the clamped output against the clamped oracle and has a variant whose colours

@@ -29,7 +29,7 @@ and the spec's test >=, a point light), where the inputs' own float32 rounding p
 and vertices whose specular power exceeds float32's range (non-unit normals: (5 n.h)^100 is inf
 in float32, and Mesa's 0 * inf = NaN where att * spot = 0 shows as 1; the exact value is finite).
 
-Where Mesa departs from the spec (notes/gl_semantics.md section 2.5, notes/peers.md addendum),
+Where Mesa departs from the spec,
 the inputs concerned are excluded, each for its reason, and a test at the end pins what Mesa
 computes there instead (Mesa 22.3.6; the code is src/mesa/main/ffvertex_prog.c):
 
@@ -41,7 +41,7 @@ computes there instead (Mesa 22.3.6; the code is src/mesa/main/ffvertex_prog.c):
    attenuation take emit_degenerate_lit and are exact.
 2. Shininess 0 on one side while the other side's is not (two-sided lighting): LIT runs with
    exponent 0 and llvmpipe's pow(0, 0) is 0, so where n.VP > 0 and n.h <= 0 the specular term
-   is 0, not f_i 0^0 s_cm s_cli (notes/gl_semantics.md 2.5, item 2, for the old C path).
+   is 0, not f_i 0^0 s_cm s_cli (in its old C path).
 3. Spot cutoff 90 with exponent 0: GL's cos(90) is exactly 0, so a vertex behind the cone's
    plane has spot = 0^0 = 1 (the spec in exact arithmetic, and glshade's documented
    convention); Mesa's SLT(cos cutoff, -VP.s) leaves it outside (spot = 0).

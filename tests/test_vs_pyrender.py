@@ -1,7 +1,7 @@
 """glshade and trimesh against pyrender, the renderer trimesh users already have.
 
 pyrender is glTF PBR with gamma, always 4x MSAA into an 8-bit colour buffer, and its depth
-image is MSAA sample 0 blitted with GL_NEAREST (notes/peers.md section 2): its colours are not
+image is MSAA sample 0 blitted with GL_NEAREST: its colours are not
 the GL equation's and nothing it returns is a float colour. What is comparable, on trimesh
 meshes with a cap cut off (so that back faces show) and random scenes of scenes.py:
 

@@ -8,7 +8,7 @@
 // exp2(y * log2(x)) with a relative error of about y * 1e-7. What GLSL leaves undefined is
 // never evaluated: pow(0, 0), pow of a negative base, 1/0 and 0/0 are avoided with selects
 // (not with multiplications by 0, which would spread NaN and inf; cf. Mesa commits b3f9c5cc0f
-// and 16ef7ab5c1 in notes/gl_semantics.md section 2.3). normalize() and inversesqrt() are not
+// and 16ef7ab5c1). normalize() and inversesqrt() are not
 // used: llvmpipe's reciprocal square root is an approximation refined once.
 
 #ifndef FF_MAX_LIGHTS
