@@ -788,3 +788,117 @@ def test_ctrl_c_interrupts_a_long_call_within_a_fifth_of_a_second(setup: str, ca
     word, _, seconds = out.strip().partition(" ")
     assert word == "interrupted", out
     assert float(seconds) < 0.2, out
+
+
+# --- every function, every layout ------------------------------------------------------------
+
+
+CUBE = np.array([[x, y, z] for x in (-0.5, 0.5) for y in (-0.5, 0.5) for z in (-0.5, 0.5)])
+CUBE_FACES = np.array(
+    [
+        [0, 1, 3], [0, 3, 2], [4, 6, 7], [4, 7, 5], [0, 4, 5], [0, 5, 1],
+        [2, 3, 7], [2, 7, 6], [0, 2, 6], [0, 6, 4], [1, 5, 7], [1, 7, 3],
+    ]
+)  # fmt: skip
+MESH_FUNCTIONS = {
+    "face_normals": lambda v, f: gs.face_normals(v, f),
+    "vertex_normals": lambda v, f: gs.vertex_normals(v, f),
+    "shade_mesh": lambda v, f: gs.shade_mesh(v, f, scene=MIXED),
+    "shade_mesh_per_face": lambda v, f: gs.shade_mesh(v, f, scene=MIXED, per="face"),
+    "render": lambda v, f: gs.render(
+        v, f, MIXED, gs.Camera.look_at((2, 1.5, 3)), width=24, height=20
+    ),
+}
+LAYOUTS = {
+    "fortran": np.asfortranarray,
+    "reversed_view": lambda a: a[::-1][::-1],
+    "strided": lambda a: np.repeat(a, 2, axis=0)[::2],
+    "misaligned": misaligned,
+    "byteswapped": lambda a: a.astype(a.dtype.newbyteorder()),
+    "list": lambda a: a.tolist(),
+}
+
+
+@pytest.mark.parametrize("function", MESH_FUNCTIONS)
+@pytest.mark.parametrize("layout", LAYOUTS)
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_mesh_functions_take_any_layout(function: str, layout: str, dtype: Any) -> None:
+    call = MESH_FUNCTIONS[function]
+    v = CUBE.astype(dtype)
+    expected = call(v, CUBE_FACES)
+    arrange = LAYOUTS[layout]
+    got = call(arrange(v), arrange(CUBE_FACES.astype(np.int32)))
+    assert got.dtype == (np.float64 if layout == "list" else dtype)
+    np.testing.assert_allclose(got, expected, rtol=0, atol=0 if layout != "list" else 1e-6)
+
+
+# --- a fuzzer: nothing but the documented exceptions, whatever the arguments ----------------
+
+FUZZ = """
+import itertools, numpy as np, glshade as gs
+rng = np.random.default_rng(20261201)
+arrays = [
+    np.zeros((0, 3)), np.ones((1, 3)), rng.normal(size=(5, 3)), rng.normal(size=(5, 2)),
+    rng.normal(size=3), np.float64(2.0), rng.normal(size=(2, 2, 3)), rng.normal(size=(5, 4)),
+    np.full((5, 3), np.nan), np.full((5, 3), np.inf), np.full((5, 3), 1e300), np.full((5, 3), -0.0),
+    np.full((5, 3), 3e38, np.float32), rng.normal(size=(5, 3)).astype(np.float16),
+    rng.normal(size=(5, 3)).astype(">f4"), rng.integers(-3, 9, (5, 3)), rng.integers(0, 5, (4, 3)),
+    np.ones((5, 3), bool), np.ones((5, 3), complex), np.array([["a"] * 3] * 5),
+    np.array([[None] * 3] * 5, dtype=object), np.zeros((5, 3), np.uint64) + 2**63,
+    [[0, 0, 1]] * 5, [[0, 0]], "text", None, 7, -1, 2.5, True, (), {}, object(),
+]
+# Valid vertex arrays, weighted up so that most calls get past the intake into the core.
+valid = [a for a in arrays[:15] if isinstance(a, np.ndarray) and a.shape == (5, 3)] * 4
+faces = [rng.integers(0, 5, (4, 3)), rng.integers(0, 5, (9, 3)), np.zeros((0, 3), int)] * 4
+extra = [None, True, False, "phong", "flat", "front", 0, 2**64, np.eye(4), np.zeros((4, 4)),
+         np.diag([1e300, 1e300, 1e300, 1]), np.diag([1e-300] * 3 + [1]), (1, 2, 3, 4)]
+scenes = [gs.Scene(), gs.Scene(lights=[gs.Light(position=(1, 2, 3, 1), spot_cutoff=30)],
+          two_side=True, separate_specular=True), "scene", None]
+allowed = (TypeError, ValueError, IndexError, MemoryError)
+counts = {}
+
+def attempt(name, call):
+    try:
+        call()
+        outcome = "ok"
+    except allowed as e:
+        outcome = type(e).__name__
+    except Exception as e:
+        print("UNEXPECTED", name, type(e).__module__, type(e).__name__, e)
+        raise SystemExit(1)
+    except BaseException as e:
+        print("UNEXPECTED", name, type(e).__module__, type(e).__name__, e)
+        raise SystemExit(1)
+    counts[outcome] = counts.get(outcome, 0) + 1
+
+def pick(pool):
+    return pool[rng.integers(len(pool))]
+
+for i in range(600):
+    a, b, c = pick(arrays + valid), pick(arrays + valid), pick(arrays + valid + [None] * 20)
+    f = pick(arrays + faces)
+    scene, option = pick(scenes), pick(extra)
+    attempt("shade", lambda: gs.shade(a, b, scene, colors=c))
+    attempt("shade out", lambda: gs.shade(a, b, scene, out=pick(arrays)))
+    attempt("shade modelview", lambda: gs.shade(a, b, scene, modelview=option, normalize=True))
+    attempt("shade accuracy", lambda: gs.shade(a, b, scene, accuracy=pick(["exact", option])))
+    attempt("face_normals", lambda: gs.face_normals(a, f))
+    attempt("vertex_normals", lambda: gs.vertex_normals(a, f, weighting=pick(["area", option])))
+    attempt("shade_mesh", lambda: gs.shade_mesh(a, f, scene=scene))
+    attempt("render", lambda: gs.render(a, f, scene, gs.Camera(), width=pick([1, 8, option]),
+                                        height=8, shading=pick(["gouraud", "flat", option])))
+    attempt("Light", lambda: gs.Light(position=pick(arrays + extra), diffuse=pick(arrays + extra)))
+    attempt("Lights", lambda: gs.Lights(spot_cutoff=pick(arrays + extra), count=pick(extra)))
+    attempt("Material", lambda: gs.Material(shininess=pick(arrays + extra), emission=option))
+    attempt("Scene", lambda: gs.Scene(lights=pick(arrays + extra + scenes), viewer=pick(arrays),
+                                      two_side=option, global_ambient=pick(arrays)))
+    attempt("Camera", lambda: gs.Camera.look_at(pick(arrays), near=option, fovy=pick(extra)))
+print(sum(counts.values()), sorted(counts.items()))
+"""
+
+
+def test_random_arguments_raise_only_documented_exceptions() -> None:
+    out = passes(FUZZ, timeout=300)
+    assert "UNEXPECTED" not in out, out
+    total = int(out.split()[0])
+    assert total == 600 * 13
