@@ -18,6 +18,8 @@ pub mod kernel;
 pub mod lanes;
 pub mod light;
 pub mod material;
+#[cfg(test)]
+mod normal_range_tests;
 pub mod normals;
 mod pages;
 pub mod passes;
