@@ -11,11 +11,14 @@
 //! a select, never a multiplication by a 0/1 mask. A light's weight (att·spot times n⊙VP or the
 //! power) is formed first and then saturated at [`Float::SATURATION`], so a huge |n|^s times a
 //! tiny spot factor keeps its value, and colours are saturated at [`Float::COLOR_SATURATION`]:
-//! finite input never meets `inf · 0` or `inf − inf`.
+//! finite input never meets `inf · 0` or `inf − inf`. Eye-space normals are saturated at
+//! 2^[`normal_exponent`] with their direction kept ([`Kernel::block`]), so a finite normal of
+//! any magnitude, under any normal matrix, lights finitely.
 
 use crate::float::Float;
 use crate::lanes::{
-    normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, Lanes, V3,
+    normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
+    MAX_LANES, V3,
 };
 use crate::material::ColorMaterialMode;
 use crate::plan::Plan;
@@ -23,6 +26,37 @@ use crate::power::{cos_pow, spot_factor, sum_exact, Scale};
 use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
+
+/// The exponent of the largest eye-space normal the kernel lights as it is, 2^63 in f32 and
+/// 2^511 in f64 (|n|² ≤ 1/`MIN_POSITIVE`): Phong's R = 2(n·VP)n − VP then stays below
+/// 2^127 or 2^1023, and |n|² below `MAX`. Longer normals are saturated ([`Kernel::block`]).
+pub fn normal_exponent<T: Real>() -> i32 {
+    ((T::EXPONENT_BIAS - 1) / 2) as i32
+}
+
+/// ⌊log2 x⌋ for finite x > 0, subnormals included (inlined, unlike `real::exponent`: the
+/// kernel's rare path must make no call).
+#[inline(always)]
+fn log2_floor(x: f64) -> i32 {
+    let (x, lift) = if x < f64::MIN_POSITIVE {
+        (x * f64::from_bits((1023 + 64) << 52), 64)
+    } else {
+        (x, 0)
+    };
+    ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023 - lift
+}
+
+/// x·2^k for k in [−2044, 2046], in two exact steps (inlined, unlike `real::ldexp`); exact
+/// unless the result is subnormal or beyond the range.
+#[inline(always)]
+fn times_power_of_two(x: f64, k: i32) -> f64 {
+    let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
+    let half = k / 2;
+    step(
+        step(x, half.clamp(-1022, 1023)),
+        (k - half).clamp(-1022, 1023),
+    )
+}
 
 /// Per-vertex colours for `GL_COLOR_MATERIAL`: `data` holds `width` (3 or 4) values per vertex,
 /// row after row; a missing alpha is 1.
@@ -390,10 +424,71 @@ impl<T: Real> Kernel<'_, T> {
         }
     }
 
+    /// [`Kernel::block`]'s eye-space normals N·n for a block with a lane whose N·n is not
+    /// finite or longer than 2^[`normal_exponent`], one lane at a time from the input
+    /// `normals`.
+    ///
+    /// The lanes in range get the vector path's N·n (the same operations). A finite input
+    /// whose N·n is not is scaled by an exact power of two (its largest component into
+    /// [1/8, 1/4), so no partial sum of N·n can overflow), transformed, and scaled back by the
+    /// same power of two or, where that would leave its largest component at or above
+    /// 2^(`normal_exponent` − 1), by the largest power of two that does not: the direction of
+    /// N·n exactly (to the rounding of N·n itself), the magnitude capped. A lane whose input
+    /// is not finite keeps the vector path's NaN or inf (its output is NaN).
+    // Inlined, with no call: a call here made every block keep its values across it (14%
+    // slower with one directional light).
+    #[inline(always)]
+    fn saturated_normals<V: Lanes<T = T>>(&self, normals: &V3<V>) -> V3<V> {
+        let buffer = |lanes: V| {
+            let mut values = [T::ZERO; MAX_LANES];
+            lanes.store(&mut values);
+            values
+        };
+        let input = [buffer(normals.x), buffer(normals.y), buffer(normals.z)];
+        let mut out = [[T::ZERO; MAX_LANES]; 3];
+        let transform = |v: [T; 3]| match &self.prepared.transform {
+            Some(t) => t.normal_of(v),
+            None => v,
+        };
+        let top = |v: [T; 3]| v.iter().fold(0.0_f64, |m, c| m.max(c.to_f64().abs()));
+        for i in 0..V::N {
+            let v = [input[0][i], input[1][i], input[2][i]];
+            let mut y = transform(v);
+            // The vector path's test, in its operations.
+            let in_range = y[0] * y[0] + y[1] * y[1] + y[2] * y[2] <= T::ONE / T::MIN_POSITIVE;
+            if !in_range && v.iter().all(|c| c.is_finite()) && top(v) != 0.0 {
+                let shift = log2_floor(top(v)) + 3;
+                y = transform(v.map(|c| T::from_f64(times_power_of_two(c.to_f64(), -shift))));
+                let y_top = top(y);
+                let back = if y_top == 0.0 {
+                    0
+                } else {
+                    shift.min(normal_exponent::<T>() - 2 - log2_floor(y_top))
+                };
+                y = y.map(|c| T::from_f64(times_power_of_two(c.to_f64(), back)));
+            }
+            for (plane, c) in out.iter_mut().zip(y) {
+                plane[i] = c;
+            }
+        }
+        V3 {
+            x: V::load(&out[0]),
+            y: V::load(&out[1]),
+            z: V::load(&out[2]),
+        }
+    }
+
     /// The colours of one side of a block of vertices (0 front, 1 back: the back of two-sided
     /// lighting is lit with −n and the back material): the primary and, with separate
     /// specular, the secondary colour, clamped, NaN in the lanes whose inputs are not finite.
     /// The equation for a whole block at once.
+    ///
+    /// The eye-space normal N·n of a finite input normal is saturated at the magnitude
+    /// 2^[`normal_exponent`] (2^63 in f32, 2^511 in f64; see `Kernel::saturated_normals`):
+    /// beyond it, or where N·n overflows, the lane lights with the same direction and a
+    /// magnitude in [2^61, 2^63) (f32) or [2^509, 2^511) (f64), so n·VP, Phong's
+    /// R = 2(n·VP)n − VP and |n| stay finite. Only a block with such a lane (or a non-finite
+    /// normal) leaves the vector path, after one comparison of |N·n|² per lane.
     #[inline(always)]
     pub fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
         let (prepared, plan) = (self.prepared, self.plan);
@@ -404,7 +499,15 @@ impl<T: Real> Kernel<'_, T> {
                 p = t.point(p);
             }
         }
-        let mut finite = n.is_finite();
+        // Saturation: |N·n|² ≤ 1/MIN_POSITIVE (|N·n| ≤ 2^63 in f32, 2^511 in f64), else rescaled.
+        let in_range = n.dot(n).le(V::splat(T::ONE / T::MIN_POSITIVE));
+        let mut finite = if in_range.all() {
+            in_range
+        } else {
+            // Finite exactly where the input normal is (a non-finite one keeps its NaN or inf).
+            n = self.saturated_normals(&input.normals);
+            n.is_finite()
+        };
         if plan.positions {
             finite = finite & p.is_finite();
         }

@@ -34,6 +34,8 @@ mod lanes;
 mod light;
 mod material;
 mod mesh;
+#[cfg(test)]
+mod normal_range_tests;
 mod normals;
 mod pages;
 mod passes;

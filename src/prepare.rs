@@ -143,6 +143,14 @@ impl<T: Real> Transform<T> {
         mul3(&self.normal, n)
     }
 
+    /// [`Transform::normal`] of one vector, in the same operations (the same bits): for the
+    /// kernel's lanes whose normal is recomputed at another scale.
+    #[inline(always)]
+    pub fn normal_of(&self, n: [T; 3]) -> [T; 3] {
+        let c = &self.normal;
+        std::array::from_fn(|k| c[0][k] * n[0] + c[1][k] * n[1] + c[2][k] * n[2])
+    }
+
     /// The transform of an affine `modelview` (last row (0, 0, 0, 1)); with `rescale_normal`,
     /// the normal matrix is scaled by GL's 1/|third row of M⁻¹| (§2.11.3). The normal matrix is
     /// the true inverse transpose (see [`Transform::for_shading`] without `normalize`), and the
@@ -538,6 +546,16 @@ mod tests {
         let ones = V3::<Pack<f64, 1>>::splat([1.0; 3]);
         assert_eq!(t.point(ones).lane(0), [2.0, 1.0, 1.0]);
         assert_eq!(t.normal(ones).lane(0), [0.5, 1.0, 1.0]);
+        let skew = DMat4::from_cols_array(&[
+            0.8, 0.1, -0.2, 0.0, -0.1, 1.3, 0.3, 0.0, 0.2, -0.2, 0.7, 0.0, 0.1, -0.3, -2.0, 1.0,
+        ]);
+        let skew = Transform::<f32>::new(&skew, false).unwrap();
+        let n = [0.3, -0.7, 0.45];
+        assert_eq!(
+            skew.normal_of(n),
+            skew.normal(V3::<Pack<f32, 1>>::splat(n)).lane(0),
+            "one vector in the lanes' operations"
+        );
         let uniform = Transform::<f64>::new(&DMat4::from_scale(DVec3::splat(4.0)), true).unwrap();
         let z = V3::<Pack<f64, 1>>::splat([0.0, 0.0, 1.0]);
         assert_eq!(uniform.normal(z).lane(0), [0.0, 0.0, 1.0]);

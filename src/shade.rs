@@ -207,8 +207,8 @@ fn check_arrays<T: Real>(
 /// every colour the scene computes into `out`.
 ///
 /// `out` holds `scene.output_count()` planes of n RGBA rows, one after the other, in the order
-/// of [`Scene::output_names`], each clamped to [0, 1]. A vertex whose eye-space normal or colour
-/// is not finite, or whose position is not finite when the scene reads positions (a positional
+/// of [`Scene::output_names`], each clamped to [0, 1]. A vertex whose normal or colour is not
+/// finite, or whose position is not finite when the scene reads positions (a positional
 /// light or a local viewer), gets NaN in every plane; every other output is finite. Vertices
 /// are shaded in parallel; the result is identical for any number of threads and on any CPU.
 ///
