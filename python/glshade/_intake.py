@@ -11,7 +11,8 @@ The rules (the README's table):
   Results have that dtype. Scene parameters and matrices are float64.
 - What the native module reads is a C-contiguous, aligned, native-order array: an argument that
   already is one is used as it is, anything else is copied.
-- ``out=`` is never copied: it must be exactly right, and it must not share memory with an input.
+- ``out=`` is never copied: it must be exactly right, and it must not share memory with an input
+  (checked exactly by the native module, and here for two maps of one file).
 """
 
 from __future__ import annotations
@@ -28,8 +29,6 @@ Float64Array = NDArray[np.float64]
 
 _FLOAT32 = np.dtype(np.float32)
 _FLOAT64 = np.dtype(np.float64)
-# Bounds the work of np.shares_memory; beyond it, memory that may be shared counts as shared.
-_OVERLAP_WORK = 1 << 16
 
 
 def array(value: ArrayLike, name: str) -> NDArray[Any]:
@@ -82,15 +81,15 @@ _WIDTHS = {"positions": (3,), "normals": (3,), "colors": (3, 4)}
 
 def vertices(
     positions: ArrayLike, normals: ArrayLike, colors: ArrayLike | None
-) -> tuple[tuple[int, ...], FloatArray, FloatArray, FloatArray | None]:
+) -> tuple[FloatArray, FloatArray, FloatArray | None]:
     """The vertex arrays of `shade` as the native module reads them, broadcast against each
-    other, and their common leading shape: (..., 3) positions and normals, (..., 3|4) colours.
-    A ValueError names the arrays whose shapes do not fit."""
+    other: (..., 3) positions and normals, (..., 3|4) colours of one leading shape. A
+    ValueError names the arrays whose shapes do not fit."""
     p, n = array(positions, "positions"), array(normals, "normals")
     dtype = compute_dtype(p, n)
     shape = p.shape
     if colors is None and shape == n.shape and shape and shape[-1] == 3:
-        return shape[:-1], ready(p, dtype), ready(n, dtype), None
+        return ready(p, dtype), ready(n, dtype), None
     given = {"positions": p, "normals": n}
     if colors is not None:
         given["colors"] = array(colors, "colors")
@@ -111,7 +110,7 @@ def vertices(
         ready(np.broadcast_to(a, (*common, a.shape[-1])), dtype) for a in given.values()
     ]
     c = ready_arrays[2] if colors is not None else None
-    return common, ready_arrays[0], ready_arrays[1], c
+    return ready_arrays[0], ready_arrays[1], c
 
 
 def rows(
@@ -196,49 +195,23 @@ def _mapped_file(a: object) -> str | None:
     return None
 
 
-def may_share(a: NDArray[Any], b: NDArray[Any], file_a: str | None) -> bool:
-    """Whether `a` (which maps `file_a`, see `_mapped_file`) and `b` may share memory:
-    overlapping addresses (exactly, within a bounded effort), or two maps of one file (at
-    different addresses, which numpy cannot see)."""
-    if np.may_share_memory(a, b):
-        try:
-            # numpy's stubs list only -1 and 0, but any positive effort bound is accepted.
-            return bool(np.shares_memory(a, b, max_work=_OVERLAP_WORK))  # type: ignore[arg-type]
-        except np.exceptions.TooHardError:
-            return True
-    if file_a is None:
-        return False
-    file_b = _mapped_file(b)
-    return file_b is not None and (file_a == "" or file_b == "" or file_a == file_b)
+def out_array(out: object, inputs: dict[str, NDArray[Any] | None]) -> FloatArray:
+    """`out` checked to be a numpy array that maps no file an input maps too.
 
-
-def out_array(
-    out: object,
-    shape: tuple[int, ...],
-    dtype: np.dtype[Any],
-    inputs: dict[str, NDArray[Any] | None],
-) -> FloatArray:
-    """`out` checked to be exactly the result's array: `dtype` in native order, `shape`,
-    C-contiguous, aligned and writeable, sharing no memory with any of `inputs`."""
+    Two maps of one file share memory at different addresses, which only the files tell; the
+    native module checks the rest, where it is exact and costs nothing: `out` must have the
+    result's dtype (native byte order) and shape, be C-contiguous, aligned and writeable, and
+    span no byte of an input (the inputs it reads are C-contiguous)."""
     if not isinstance(out, np.ndarray):
         raise TypeError(f"out must be a numpy array, got {type(out).__name__}")
-    if out.dtype != dtype:
-        raise TypeError(f"out must have dtype {dtype} (native byte order), got {out.dtype}")
-    if out.shape != shape:
-        raise ValueError(f"out must have shape {shape}, got {out.shape}")
-    flags = out.flags
-    for ok, message in (
-        (flags.c_contiguous, "C-contiguous"),
-        (flags.aligned, "aligned"),
-        (flags.writeable, "writeable"),
-    ):
-        if not ok:
-            raise ValueError(f"out must be {message}, got an array that is not")
     mapped = _mapped_file(out)
+    if mapped is None:
+        return out
     for name, a in inputs.items():
-        if a is not None and may_share(out, a, mapped):
+        other = None if a is None else _mapped_file(a)
+        if other is not None and (mapped == "" or other == "" or other == mapped):
             raise ValueError(
-                f"out and {name} share memory (or may: both map one file): the result would "
-                f"overwrite {name} while it is read; pass a separate out"
+                f"out and {name} may share memory (both map {mapped or 'a file'}): the result "
+                f"would overwrite {name} while it is read; pass a separate out"
             )
     return out

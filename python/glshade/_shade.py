@@ -111,13 +111,11 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    leading, p, n, c = vertices(positions, normals, colors)
+    p, n, c = vertices(positions, normals, colors)
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
     if out is not None:
-        k = len(scene.outputs)
-        shape = (*((k,) if k > 1 else ()), *leading, 4)
-        out = out_array(out, shape, p.dtype, {"positions": p, "normals": n, "colors": c})
+        out = out_array(out, {"positions": p, "normals": n, "colors": c})
     result: FloatArray = _glshade.shade(
         p,
         n,

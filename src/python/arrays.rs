@@ -94,34 +94,73 @@ pub fn vertex_colors<'a, T: Element>(
     Ok(VertexColors { data, width })
 }
 
-/// A write borrow of `out`, which the intake checked for dtype, shape and layout; a conflict
-/// with another borrow (the same memory in use by a call in another thread) is a `ValueError`.
+/// The bytes an array's data spans.
+fn span(start: *const u8, bytes: usize) -> std::ops::Range<usize> {
+    let start = start as usize;
+    start..start + bytes
+}
+
+/// A write borrow of `out`, checked to be exactly the result's array: `T` in native byte order,
+/// `shape`, C-contiguous, aligned, writeable, and sharing no memory with any of `inputs`
+/// (named C-contiguous slices, so the overlap test is exact). Errors name `out`; a borrow
+/// conflict left after those checks is the same memory in use by a call in another thread.
 pub fn write<'py, T: Element>(
     out: &Bound<'py, PyUntypedArray>,
     shape: &[usize],
+    inputs: &[(&str, &[T])],
 ) -> PyResult<PyReadwriteArrayDyn<'py, T>> {
     let array = out.cast::<PyArrayDyn<T>>().map_err(|_| {
         PyTypeError::new_err(format!(
-            "out must be an array of {}, got {}",
+            "out must have dtype {} (native byte order), got {}",
             numpy::dtype::<T>(out.py()),
             out.dtype()
         ))
     })?;
-    if array.shape() != shape {
+    let found = array.shape();
+    if found != shape {
+        let text = |s: &[usize]| match s {
+            [d] => format!("({d},)"),
+            _ => format!(
+                "({})",
+                s.iter()
+                    .map(ToString::to_string)
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ),
+        };
         return Err(PyValueError::new_err(format!(
-            "out must have shape {shape:?}, got {:?}",
-            array.shape()
+            "out must have shape {}, got {}",
+            text(shape),
+            text(found)
         )));
     }
-    let rw = array.try_readwrite().map_err(|_| {
-        PyValueError::new_err("out is in use by another call (as an input or as its out=)")
-    })?;
-    if !rw.is_c_contiguous() {
+    if !array.is_c_contiguous() {
         return Err(PyValueError::new_err(
-            "out must be C-contiguous and aligned",
+            "out must be C-contiguous, got an array that is not",
         ));
     }
-    Ok(rw)
+    let data = array.data().cast::<u8>().cast_const();
+    if data.align_offset(std::mem::align_of::<T>()) != 0 {
+        return Err(PyValueError::new_err(
+            "out must be aligned, got an array that is not",
+        ));
+    }
+    let out_span = span(data, array.len() * std::mem::size_of::<T>());
+    for (name, input) in inputs {
+        let input_span = span(input.as_ptr().cast(), std::mem::size_of_val(*input));
+        if out_span.start < input_span.end && input_span.start < out_span.end {
+            return Err(PyValueError::new_err(format!(
+                "out and {name} share memory: the result would overwrite {name} while it is \
+                 read; pass a separate out"
+            )));
+        }
+    }
+    array.try_readwrite().map_err(|e| match e {
+        numpy::BorrowError::NotWriteable => {
+            PyValueError::new_err("out must be writeable, got an array that is not")
+        }
+        _ => PyValueError::new_err("out is in use by another call in another thread"),
+    })
 }
 
 /// A new C-contiguous array of `shape`, filled by `write` before Python sees it; it starts

@@ -44,7 +44,13 @@ fn shade_typed<'py, T: Element + Real>(
     shape.push(4);
     let long = n.len().saturating_mul(scene.lights.len() + 1) > LONG_CALL;
     if let Some(out) = out {
-        let mut rw = write::<T>(out, &shape)?;
+        let colors: &[T] = vertex_colors.as_ref().map_or(&[], |c| c.data);
+        let inputs = [
+            ("positions", p.as_flattened()),
+            ("normals", n.as_flattened()),
+            ("colors", colors),
+        ];
+        let mut rw = write::<T>(out, &shape, &inputs)?;
         let dst = rw.as_slice_mut()?;
         run(py, long, |stop| {
             crate::shade::shade(scene, p, n, vertex_colors, options, dst, stop)
