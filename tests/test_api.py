@@ -429,3 +429,22 @@ def test_specular_gate_is_part_of_the_scene() -> None:
     assert gs.Scene(specular="phong") != scene
     with pytest.raises(TypeError, match="specular_gate must be True or False, got 'no'"):
         gs.Scene(specular_gate="no")  # type: ignore[arg-type]
+
+
+# --- documentation -----------------------------------------------------------------------------
+
+
+def test_the_docstring_examples_print_what_they_say() -> None:
+    import doctest
+    import importlib
+    import pkgutil
+
+    attempted = doctest.testmod(gs, optionflags=doctest.ELLIPSIS).attempted
+    for info in pkgutil.iter_modules(gs.__path__):
+        if info.name.startswith("_bench") or info.name == "__main__":
+            continue
+        module = importlib.import_module(f"glshade.{info.name}")
+        result = doctest.testmod(module, optionflags=doctest.ELLIPSIS, verbose=False)
+        assert result.failed == 0, info.name
+        attempted += result.attempted
+    assert attempted >= 30

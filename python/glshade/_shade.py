@@ -106,8 +106,10 @@ def shade(
     --------
     >>> import numpy as np, glshade as gs
     >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))])
-    >>> gs.shade(np.zeros((1, 3), np.float32), np.array([[0, 0, 1]], np.float32), scene)
-    array([[0.84, 0.84, 0.84, 1.  ]], dtype=float32)
+    >>> gs.shade(np.zeros((1, 3)), np.array([[0, 0, 1.0]]), scene)
+    array([[0.84, 0.84, 0.84, 1.  ]])
+    >>> gs.shade(np.zeros((480, 640, 3), np.float32), (0, 0, 1), scene).shape  # one normal for all
+    (480, 640, 4)
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
