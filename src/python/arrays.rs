@@ -64,7 +64,8 @@ pub fn rows<'a, T: Element, const K: usize>(
     let shape = array.shape();
     if shape.last() != Some(&K) {
         return Err(PyValueError::new_err(format!(
-            "{name} must have shape (..., {K}), got {shape:?}"
+            "{name} must have shape (..., {K}), got {}",
+            shape_text(shape)
         )));
     }
     // as_slice also takes Fortran order, which would read the values scrambled.
@@ -86,12 +87,27 @@ pub fn vertex_colors<'a, T: Element>(
         4 => rows::<T, 4>(colors, "colors")?.as_flattened(),
         _ => {
             return Err(PyValueError::new_err(format!(
-                "colors must have shape (..., 3) or (..., 4), got {:?}",
-                colors.shape()
+                "colors must have shape (..., 3) or (..., 4), got {}",
+                shape_text(colors.shape())
             )))
         }
     };
     Ok(VertexColors { data, width })
+}
+
+/// A shape as Python prints it: `(3,)`, `(2, 4)`, `()`.
+pub fn shape_text(shape: &[usize]) -> String {
+    match shape {
+        [d] => format!("({d},)"),
+        _ => format!(
+            "({})",
+            shape
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ),
+    }
 }
 
 /// The bytes an array's data spans.

@@ -33,8 +33,8 @@ fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
         .filter(|_| m.shape() == [4, 4])
         .ok_or_else(|| {
             PyValueError::new_err(format!(
-                "{name} must be a C-contiguous (4, 4) array, got shape {:?}",
-                m.shape()
+                "{name} must be a C-contiguous (4, 4) array, got shape {}",
+                arrays::shape_text(m.shape())
             ))
         })?;
     Ok(glam::DMat4::from_cols_array(&rows).transpose())

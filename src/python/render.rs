@@ -90,8 +90,8 @@ pub fn render<'py>(
     };
     let background: [f64; 4] = background.as_slice()?.try_into().map_err(|_| {
         PyValueError::new_err(format!(
-            "background must have 4 values, got {:?}",
-            background.shape()
+            "background must have 4 values, got shape {}",
+            super::arrays::shape_text(background.shape())
         ))
     })?;
     let options = RenderOptions {

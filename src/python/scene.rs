@@ -7,6 +7,7 @@ use pyo3::exceptions::{PyIndexError, PyTypeError, PyValueError};
 use pyo3::prelude::*;
 use pyo3::types::{PyDict, PyTuple};
 
+use super::arrays::shape_text;
 use super::runtime::to_pyerr;
 use crate::light::Light;
 use crate::material::Material as GlMaterial;
@@ -129,21 +130,6 @@ impl<'py> Given<'py> {
         for (dst, src) in field.iter_mut().zip(row.iter()) {
             *dst = *src;
         }
-    }
-}
-
-/// A shape as Python prints it: `(3,)`, `(2, 4)`, `()`.
-fn shape_text(shape: &[usize]) -> String {
-    match shape {
-        [d] => format!("({d},)"),
-        _ => format!(
-            "({})",
-            shape
-                .iter()
-                .map(ToString::to_string)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ),
     }
 }
 
