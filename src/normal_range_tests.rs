@@ -12,20 +12,8 @@ use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
+use crate::specialisation_tests::Numbers;
 use crate::stop::Stop;
-
-/// A deterministic stream of numbers in [-1, 1) (a 64-bit LCG).
-struct Numbers(u64);
-
-impl Numbers {
-    fn next(&mut self) -> f64 {
-        self.0 = self
-            .0
-            .wrapping_mul(6_364_136_223_846_793_005)
-            .wrapping_add(1_442_695_040_888_963_407);
-        (self.0 >> 11) as f64 / (1u64 << 52) as f64 - 1.0
-    }
-}
 
 /// The positional spot light with attenuation of the report, or a directional light.
 fn scene(spot: bool, specular: Specular, two_side: bool) -> Scene {

@@ -24,10 +24,11 @@ const FEATURES: u32 = 14;
 const VERTICES: usize = 165;
 
 /// A deterministic stream of numbers in [-1, 1) (a 64-bit LCG; no dependency).
-struct Numbers(u64);
+pub(crate) struct Numbers(pub(crate) u64);
 
 impl Numbers {
-    fn next(&mut self) -> f64 {
+    /// The next number.
+    pub(crate) fn next(&mut self) -> f64 {
         self.0 = self
             .0
             .wrapping_mul(6_364_136_223_846_793_005)
