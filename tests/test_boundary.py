@@ -616,6 +616,35 @@ def test_a_fork_pool_after_the_parent_shaded_returns_the_parents_results() -> No
     assert out.strip() == "ok"
 
 
+def test_a_grandchild_forked_from_a_forked_child_shades_too() -> None:
+    out = passes(
+        """
+        import os, numpy as np, glshade as gs
+        p = np.random.default_rng(2).normal(size=(100_000, 3))
+        scene = gs.Scene(lights=[gs.Light(position=(1, 2, 3, 1))])
+        expected = gs.shade(p, p, scene)
+
+        def generation(depth):
+            assert np.array_equal(gs.shade(p, p, scene), expected)
+            if depth == 0:
+                os._exit(0)
+            pid = os.fork()
+            if pid == 0:
+                generation(depth - 1)
+            _, status = os.waitpid(pid, 0)
+            os._exit(os.waitstatus_to_exitcode(status))
+
+        pid = os.fork()
+        if pid == 0:
+            generation(2)
+        _, status = os.waitpid(pid, 0)
+        print("ok" if os.waitstatus_to_exitcode(status) == 0 else "failed")
+        """,
+        timeout=120,
+    )
+    assert out.strip() == "ok"
+
+
 ALLOCATION = """
 import resource, numpy as np, glshade as gs
 rng = np.random.default_rng(0)

@@ -3,7 +3,7 @@
 //! exception (a panic included, so none crosses into Python).
 
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::{Arc, Mutex, OnceLock, TryLockError};
 use std::time::Duration;
 
 use pyo3::exceptions::{PyIndexError, PyMemoryError, PyRuntimeError, PyValueError};
@@ -13,6 +13,9 @@ use crate::{Error, ErrorKind, Stop};
 
 /// How often a long call looks for a pending signal (Ctrl-C) while the core works.
 const SIGNAL_POLL: Duration = Duration::from_millis(20);
+
+/// How long a forked child waits for the lock on its pool before it takes one of its own.
+const LOCK_PATIENCE: Duration = Duration::from_secs(1);
 
 /// The core's error as the Python exception its kind names.
 pub fn to_pyerr(e: Error) -> PyErr {
@@ -40,21 +43,33 @@ fn child_pool() -> Result<Option<Arc<rayon::ThreadPool>>, Error> {
     if LOADED_IN.get().is_none_or(|&p| p == pid) {
         return Ok(None);
     }
-    // A fork taken while another thread held the lock leaves it poisoned or held in the child;
-    // the pool behind it is then the parent's, so it is replaced either way.
-    let mut slot = POOLS
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    let build = || {
+        rayon::ThreadPoolBuilder::new()
+            .thread_name(|i| format!("glshade-{i}"))
+            .build()
+            .map(Arc::new)
+            .map_err(|e| Error::memory(format!("cannot start glshade's threads: {e}")))
+    };
+    // A fork taken while a thread of the forking process held the lock leaves it held for
+    // ever in the child (that thread is gone): after a while, the call gets a pool of its own.
+    let mut waited = Duration::ZERO;
+    let mut slot = loop {
+        match POOLS.try_lock() {
+            Ok(slot) => break slot,
+            Err(TryLockError::Poisoned(poisoned)) => break poisoned.into_inner(),
+            Err(TryLockError::WouldBlock) if waited < LOCK_PATIENCE => {
+                std::thread::sleep(Duration::from_millis(1));
+                waited += Duration::from_millis(1);
+            }
+            Err(TryLockError::WouldBlock) => return build().map(Some),
+        }
+    };
     if let Some((owner, pool)) = slot.as_ref() {
         if *owner == pid {
             return Ok(Some(Arc::clone(pool)));
         }
     }
-    let pool = rayon::ThreadPoolBuilder::new()
-        .thread_name(|i| format!("glshade-{i}"))
-        .build()
-        .map_err(|e| Error::memory(format!("cannot start glshade's threads: {e}")))?;
-    let pool = Arc::new(pool);
+    let pool = build()?;
     // The inherited pool's threads are gone: dropping it would signal threads that do not exist.
     if let Some(old) = slot.replace((pid, Arc::clone(&pool))) {
         std::mem::forget(old);
