@@ -325,6 +325,29 @@ def test_scene_objects_pickle_and_deepcopy_to_equal_objects(obj: Any, protocol: 
         )
 
 
+CAMERAS = [
+    gs.Camera(),
+    gs.Camera(view=np.diag([1.0, 2.0, 1.0, 1.0]), projection=np.diag([1.0, 1.0, -1.0, 1.0])),
+    gs.Camera.look_at((1, 2, 3), fovy=30, near=0.5, far=20),
+    gs.Camera.look_at((1, 2, 3), (0, 1, 0), aspect=1.5),
+    gs.Camera.look_at_orthographic((0, 0, 5), height=3, near=-1, far=9),
+]
+
+
+@pytest.mark.parametrize("camera", CAMERAS, ids=repr)
+def test_cameras_pickle_and_deepcopy_to_equal_cameras(camera: gs.Camera) -> None:
+    for clone in (pickle.loads(pickle.dumps(camera)), copy.deepcopy(camera)):
+        assert clone == camera and repr(clone) == repr(camera)
+        np.testing.assert_array_equal(clone.view, camera.view)
+        for size in ((640, 480), (3, 7)):
+            np.testing.assert_array_equal(
+                clone.projection_matrix(*size), camera.projection_matrix(*size)
+            )
+        assert not clone.view.flags.writeable
+        assert not clone.projection_matrix(1, 1).flags.writeable or camera._lens[0] != "projection"
+    assert camera != gs.Camera.look_at((9, 9, 9))
+
+
 def test_equality_is_by_value() -> None:
     assert gs.Light(position=(1, 2, 3, 1)) == gs.Light(position=[1.0, 2, 3, 1])
     assert gs.Light(position=(1, 2, 3, 1)) != gs.Light(position=(1, 2, 3, 0))

@@ -3,7 +3,7 @@ and glOrtho."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -69,21 +69,41 @@ class Camera:
     (4, 4)
     """
 
+    __slots__ = ("_lens", "_view")
+    _lens: tuple[Any, ...]
+
     def __init__(self, view: ArrayLike | None = None, projection: ArrayLike | None = None) -> None:
         self._view = _matrix(view, "view")
-        fixed = _matrix(projection, "projection")
-        self._projection: Callable[[float], Float64Array] = lambda aspect: fixed
-        self._description = "projection=..."
+        self._lens = ("projection", _matrix(projection, "projection"))
 
     @classmethod
-    def _built(
-        cls, view: Float64Array, projection: Callable[[float], Float64Array], description: str
-    ) -> Camera:
+    def _built(cls, view: Float64Array, lens: tuple[Any, ...]) -> Camera:
+        """A camera of `view` and `lens`: ("projection", matrix), ("perspective", fovy, aspect,
+        near, far) or ("orthographic", height, aspect, near, far), aspect None for the image's."""
         camera = cls(view)
-        projection(1.0)  # checks the parameters now rather than at the first render
-        camera._projection = projection
-        camera._description = description
+        if lens[0] == "projection":  # read-only again after a pickle's round trip
+            lens = ("projection", _matrix(lens[1], "projection"))
+        camera._lens = lens
+        camera.projection_matrix(1, 1)  # checks the parameters now rather than at the first render
         return camera
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (Camera._built, (self._view, self._lens))
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Camera):
+            return NotImplemented
+        same = (
+            np.array_equal(a, b) if isinstance(a, np.ndarray) else a == b
+            for a, b in zip(self._lens, other._lens, strict=False)
+        )
+        return (
+            np.array_equal(self._view, other._view)
+            and len(self._lens) == len(other._lens)
+            and all(same)
+        )
+
+    __hash__ = None  # type: ignore[assignment]
 
     @classmethod
     def look_at(
@@ -123,12 +143,7 @@ class Camera:
         """
         view = _glshade.look_at(_point(eye, "eye"), _point(target, "target"), _point(up, "up"))
         f, n, z = number(fovy, "fovy"), number(near, "near"), number(far, "far")
-        fixed = _aspect(aspect)
-        return cls._built(
-            view,
-            lambda a: _glshade.perspective(f, a if fixed is None else fixed, n, z),
-            f"look_at(fovy={f:g}, aspect={aspect}, near={n:g}, far={z:g})",
-        )
+        return cls._built(view, ("perspective", f, _aspect(aspect), n, z))
 
     @classmethod
     def look_at_orthographic(
@@ -165,17 +180,7 @@ class Camera:
         h, n, z = number(height, "height"), number(near, "near"), number(far, "far")
         if not 0 < h < np.inf:
             raise ValueError(f"height must be finite and > 0, got {h:g}")
-        fixed = _aspect(aspect)
-
-        def projection(a: float) -> Float64Array:
-            half_width = 0.5 * h * (a if fixed is None else fixed)
-            return _glshade.orthographic(-half_width, half_width, -0.5 * h, 0.5 * h, n, z)
-
-        return cls._built(
-            view,
-            projection,
-            f"look_at_orthographic(height={h:g}, aspect={aspect}, near={n:g}, far={z:g})",
-        )
+        return cls._built(view, ("orthographic", h, _aspect(aspect), n, z))
 
     @property
     def view(self) -> Float64Array:
@@ -185,7 +190,24 @@ class Camera:
     def projection_matrix(self, width: int, height: int) -> Float64Array:
         """The (4, 4) float64 projection for an image of `width` x `height` pixels (which sets
         the aspect ratio of a camera built without one)."""
-        return self._projection(width / height)
+        kind, *parameters = self._lens
+        if kind == "projection":
+            fixed: Float64Array = parameters[0]
+            return fixed
+        size, aspect, near, far = parameters
+        a = width / height if aspect is None else aspect
+        if kind == "perspective":
+            return _glshade.perspective(size, a, near, far)
+        half_width = 0.5 * size * a
+        return _glshade.orthographic(-half_width, half_width, -0.5 * size, 0.5 * size, near, far)
 
     def __repr__(self) -> str:
-        return f"Camera({self._description}, view={self._view.tolist()})"
+        kind, *parameters = self._lens
+        if kind == "projection":
+            lens = "projection=..."
+        else:
+            size, aspect, near, far = parameters
+            name = "fovy" if kind == "perspective" else "height"
+            method = "look_at" if kind == "perspective" else "look_at_orthographic"
+            lens = f"{method}({name}={size:g}, aspect={aspect}, near={near:g}, far={far:g})"
+        return f"Camera({lens}, view={self._view.tolist()})"
