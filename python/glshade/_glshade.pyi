@@ -6,6 +6,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 __all__ = [
+    "MAX_SIZE",
     "Lights",
     "Material",
     "Scene",
@@ -21,6 +22,7 @@ __all__ = [
 ]
 
 __version__: str
+MAX_SIZE: int
 
 @final
 class Lights:

@@ -74,10 +74,6 @@ def _plain_unless_image(value: Any) -> Any:
     return value
 
 
-# GL_MAX_VIEWPORT_DIMS of common drivers; the core checks the same bound.
-_MAX_SIZE = 16384
-
-
 @overload
 def render(
     vertices: Any,
@@ -239,8 +235,8 @@ def render(
     if colors is not None:
         c = rows(colors, "colors", v.dtype, (3, 4))
         color_material = color_material or "ambient_and_diffuse"
-    w = integer(width, "width", 1, _MAX_SIZE)
-    h = integer(height, "height", 1, _MAX_SIZE)
+    w = integer(width, "width", 1, _glshade.MAX_SIZE)
+    h = integer(height, "height", 1, _glshade.MAX_SIZE)
     image, z = _glshade.render(
         v,
         f,

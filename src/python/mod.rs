@@ -60,6 +60,7 @@ mod _glshade {
     fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
         super::runtime::init();
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+        m.add("MAX_SIZE", crate::raster::MAX_SIZE)?;
         Ok(())
     }
 }

@@ -184,33 +184,32 @@ fn build<T: Clone>(
     Ok(items)
 }
 
-/// One parameter of every item as a read-only array: (L, w) for a vector, (L,) for a number.
-fn column<'py, T: Clone + Default>(
+/// The parameter `name` of `table` (a `what` parameter) of every item as a read-only array of
+/// shape `leading` + (w,) for a vector, `leading` for a number.
+fn values<'py, T: Clone + Default>(
     py: Python<'py>,
+    (table, what): (&[(&'static str, Widths)], &str),
     items: &[T],
     name: &str,
     field: Field<T>,
+    leading: &[usize],
 ) -> PyResult<Bound<'py, PyAny>> {
-    let width = field(&mut T::default(), name).len();
-    let mut flat = Vec::with_capacity(items.len() * width);
+    let widths = table
+        .iter()
+        .find(|(n, _)| *n == name)
+        .map(|(_, w)| *w)
+        .ok_or_else(|| PyValueError::new_err(format!("not a {what} parameter: {name:?}")))?;
+    let mut flat = Vec::new();
     for item in items {
         flat.extend_from_slice(field(&mut item.clone(), name));
     }
-    let array = PyArray1::from_vec(py, flat);
-    let array = if is_number(name) {
-        array.into_any()
-    } else {
-        array.reshape([items.len(), width])?.into_any()
-    };
+    let mut shape = leading.to_vec();
+    if !widths.is_empty() {
+        shape.push(field(&mut T::default(), name).len());
+    }
+    let array = PyArray1::from_vec(py, flat).reshape(shape)?.into_any();
     array.call_method1("setflags", (false,))?;
     Ok(array)
-}
-
-fn is_number(name: &str) -> bool {
-    LIGHT_PARAMETERS
-        .iter()
-        .chain(&MATERIAL_PARAMETERS)
-        .any(|&(n, w)| n == name && w.is_empty())
 }
 
 /// GL's default of each parameter of `table`, read from `default`, as a dict for the
@@ -283,12 +282,9 @@ impl Lights {
 
     /// One parameter of every light: (L, w) float64, or (L,) for a number; read-only.
     fn column<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        if !LIGHT_PARAMETERS.iter().any(|(n, _)| *n == name) {
-            return Err(PyValueError::new_err(format!(
-                "not a light parameter: {name:?}"
-            )));
-        }
-        column(py, &self.lights, name, light_field)
+        let leading = [self.lights.len()];
+        let table = (&LIGHT_PARAMETERS[..], "light");
+        values(py, table, &self.lights, name, light_field, &leading)
     }
 
     /// The lights at `indices` (int64, each in [0, L)), in that order.
@@ -377,20 +373,8 @@ impl Material {
 
     /// One parameter as a read-only float64 array: (4,), or () for `shininess`.
     fn get<'py>(&self, py: Python<'py>, name: &str) -> PyResult<Bound<'py, PyAny>> {
-        if !MATERIAL_PARAMETERS.iter().any(|(n, _)| *n == name) {
-            return Err(PyValueError::new_err(format!(
-                "not a material parameter: {name:?}"
-            )));
-        }
-        let mut material = self.material;
-        let values = PyArray1::from_slice(py, material_field(&mut material, name));
-        let array = if is_number(name) {
-            values.reshape([0_usize; 0])?.into_any()
-        } else {
-            values.into_any()
-        };
-        array.call_method1("setflags", (false,))?;
-        Ok(array)
+        let table = (&MATERIAL_PARAMETERS[..], "material");
+        values(py, table, &[self.material], name, material_field, &[])
     }
 
     fn __getnewargs__<'py>(&self, py: Python<'py>) -> PyResult<(Vec<Bound<'py, PyAny>>,)> {
