@@ -325,6 +325,70 @@ def test_scene_objects_pickle_and_deepcopy_to_equal_objects(obj: Any, protocol: 
         )
 
 
+def test_out_of_band_pickles_unpickle_from_misaligned_buffers() -> None:
+    # Pickle protocol 5 hands the arrays' bytes over as buffers, which a receiver may place at
+    # any offset: the scene rebuilt from them must shade as the original.
+    for obj in OBJECTS:
+        buffers: list[pickle.PickleBuffer] = []
+        data = pickle.dumps(obj, protocol=5, buffer_callback=buffers.append)
+        arrays = [np.frombuffer(b.raw(), np.float64) for b in buffers]
+        shifted = [misaligned(a) if a.size else a for a in arrays]
+        clone = pickle.loads(data, buffers=shifted)
+        assert clone == obj
+        if isinstance(obj, gs.Scene):
+            p, n = rows(30)
+            np.testing.assert_array_equal(gs.shade(p, n, clone), gs.shade(p, n, obj))
+
+
+PRESETS = [
+    gs.presets.learnopengl(model=np.diag([2.0, 1.0, 1.0, 1.0])),
+    gs.presets.opengl([gs.Light()], gs.Material(shininess=9), local_viewer=True),
+    gs.presets.directx11(
+        l_a=(0.1, 0.1, 0.1),
+        l_d=(1, 1, 1),
+        l_s=(1, 1, 1),
+        m_a=(1, 0, 0),
+        m_d=(1, 0, 0),
+        m_s=(1, 1, 1),
+        p=16,
+        eye_position=(0, 0, 5),
+        light_vector=(0, 0, -1),
+    ),
+    gs.presets.phong_illumination(
+        k_a=0.1,
+        k_d=0.7,
+        k_s=0.2,
+        n=10,
+        I_a=(1, 1, 1),
+        I_l=(1, 1, 1),
+        viewer_position=(0, 0, 5),
+        light_position=(1, 2, 3),
+        attenuation="inverse_square",
+    ),
+]
+
+
+@pytest.mark.parametrize("preset", PRESETS, ids=lambda p: sorted(p.shade_kwargs))
+def test_presets_pickle_and_deepcopy_to_equal_presets(preset: gs.presets.Preset) -> None:
+    p, n = rows(20)
+    for clone in (pickle.loads(pickle.dumps(preset)), copy.deepcopy(preset)):
+        assert type(clone) is gs.presets.Preset and clone == preset
+        np.testing.assert_array_equal(clone.shade(p, n), preset.shade(p, n))
+    other = gs.presets.learnopengl(model=np.diag([3.0, 1.0, 1.0, 1.0]))
+    assert other != PRESETS[0] and PRESETS[0] == PRESETS[0]
+
+
+def test_images_pickle_and_deepcopy_to_equal_images() -> None:
+    vertices = np.array([[0, 0, 1], [1, 0, -0.5], [-1, 0.5, -0.5], [0, -1, -0.5]], np.float32)
+    faces = np.array([[0, 1, 2], [0, 2, 3], [0, 3, 1], [1, 3, 2]])
+    camera = gs.Camera.look_at((0.3, 0.2, 4))
+    image = gs.render(vertices, faces, MIXED, camera, width=9, height=7)
+    assert np.ptp(np.asarray(image)) > 0
+    for clone in (pickle.loads(pickle.dumps(image)), copy.deepcopy(image)):
+        assert type(clone) is gs.Image and clone.shape == (7, 9, 4)
+        np.testing.assert_array_equal(clone, image)
+
+
 CAMERAS = [
     gs.Camera(),
     gs.Camera(view=np.diag([1.0, 2.0, 1.0, 1.0]), projection=np.diag([1.0, 1.0, -1.0, 1.0])),

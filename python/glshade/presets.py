@@ -35,13 +35,12 @@ __all__ = ["Preset", "directx11", "learnopengl", "opengl", "phong_illumination"]
 _BLACK = (0.0, 0.0, 0.0, 1.0)
 
 
-def _no_kwargs() -> Mapping[str, Any]:
-    return MappingProxyType({})
-
-
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class Preset:
     """A lighting model as glshade state.
+
+    Presets pickle and deepcopy to equal presets, and compare equal when their scenes are equal
+    and their keywords hold equal values (arrays compared element by element).
 
     Attributes
     ----------
@@ -52,7 +51,26 @@ class Preset:
     """
 
     scene: Scene
-    shade_kwargs: Mapping[str, Any] = field(default_factory=_no_kwargs)
+    shade_kwargs: Mapping[str, Any] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        # A read-only view of a private copy: the caller's dict cannot change the preset.
+        object.__setattr__(self, "shade_kwargs", MappingProxyType(dict(self.shade_kwargs)))
+
+    def __reduce__(self) -> tuple[type[Preset], tuple[Scene, dict[str, Any]]]:
+        return (Preset, (self.scene, dict(self.shade_kwargs)))
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Preset):
+            return NotImplemented
+        mine, theirs = self.shade_kwargs, other.shade_kwargs
+        return (
+            self.scene == other.scene
+            and mine.keys() == theirs.keys()
+            and all(np.array_equal(mine[k], theirs[k]) for k in mine)
+        )
+
+    __hash__ = None  # type: ignore[assignment]  # equal by value, and mutable inside (arrays)
 
     def shade(self, positions: ArrayLike, normals: ArrayLike, **extra: Any) -> FloatArray:
         """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``."""
@@ -200,7 +218,7 @@ def directx11(
         viewer=(*eye, 1.0),
         specular="phong",
     )
-    return Preset(scene, MappingProxyType({"normalize": True}))
+    return Preset(scene, {"normalize": True})
 
 
 def _model_matrix(model: ArrayLike | None) -> FloatArray | None:
@@ -292,7 +310,7 @@ def learnopengl(
     kwargs: dict[str, Any] = {"normalize": True}
     if matrix is not None:
         kwargs["modelview"] = matrix
-    return Preset(scene, MappingProxyType(kwargs))
+    return Preset(scene, kwargs)
 
 
 def _attenuation(value: Any) -> tuple[float, float, float]:
@@ -437,4 +455,4 @@ def phong_illumination(
         viewer=(*viewer, 1.0),
         specular="phong",
     )
-    return Preset(scene, MappingProxyType({"normalize": True}))
+    return Preset(scene, {"normalize": True})
