@@ -15,11 +15,11 @@ Needs ``pip install 'glshade[dask]'`` (dask[array] and distributed).
 >>> import numpy as np, dask.array as da, glshade as gs, glshade.dask
 >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))])
 >>> positions = da.zeros((10, 3), dtype=np.float32, chunks=4)
->>> rgba = glshade.dask.shade(positions, (0, 0, 1), scene)
+>>> rgba = glshade.dask.shade(positions, np.float32([0, 0, 1]), scene)
 >>> rgba.dtype, rgba.shape, rgba.chunks
 (dtype('float32'), (10, 4), ((4, 4, 2), (4,)))
 >>> rgba.compute()[0]
-array([0.84, 0.84, 0.84, 1.  ], dtype=float32)
+array([0.84000003, 0.84000003, 0.84000003, 1.        ], dtype=float32)
 """
 
 from __future__ import annotations
