@@ -1,0 +1,139 @@
+"""``python -m glshade bench cluster``: a dask.distributed LocalCluster shading float32 vertices
+from memory-mapped .npy files into another, beside one local `gs.shade` call over the same data.
+
+Both read the positions and normals from the files and write RGBA into a file: the local call
+through ``np.load(mmap_mode="r")`` and ``out=`` a mapped output, the cluster through
+`glshade.dask.from_npy` and `glshade.dask.to_npy`, its workers reading and writing their own
+chunks. Rounds alternate the two, so that both meet the same page cache and the same load on
+the machine; the outputs are compared bit for bit.
+"""
+
+from __future__ import annotations
+
+import os
+import platform
+import statistics
+import tempfile
+import time
+from pathlib import Path
+
+import numpy as np
+
+import glshade as gs
+
+from ._bench_shade import bench_scenes
+
+
+def write_inputs(folder: Path, vertices: int, seed: int = 0) -> tuple[Path, Path]:
+    """positions.npy (a unit sphere's points at z = -3, jittered) and normals.npy, float32,
+    written 2**22 rows at a time so that memory stays small."""
+    rng = np.random.default_rng(seed)
+    paths = folder / "positions.npy", folder / "normals.npy"
+    p = np.lib.format.open_memmap(paths[0], "w+", np.float32, (vertices, 3))
+    n = np.lib.format.open_memmap(paths[1], "w+", np.float32, (vertices, 3))
+    for start in range(0, vertices, 1 << 22):
+        rows = min(1 << 22, vertices - start)
+        normal = rng.standard_normal((rows, 3), np.float32)
+        normal /= np.linalg.norm(normal, axis=1, keepdims=True)
+        n[start : start + rows] = normal
+        p[start : start + rows] = normal + rng.normal(0, 0.01, (rows, 3)).astype(np.float32)
+        p[start : start + rows, 2] -= 3
+    p.flush()
+    n.flush()
+    return paths
+
+
+def cpu_model() -> str:
+    """The CPU's model name from /proc/cpuinfo, else what platform says."""
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()
+
+
+def bench_cluster(
+    vertices: int, chunk: int, workers: int, repeat: int, folder: str | None = None
+) -> int:
+    """Runs the benchmark and prints its table; returns the process exit status."""
+    try:
+        import distributed
+
+        import glshade.dask as gsd
+    except ImportError as error:
+        print(f"{error}: pip install 'glshade[dask]'")
+        return 1
+    scene = bench_scenes()["8 mixed"]
+    with tempfile.TemporaryDirectory(dir=folder, prefix="glshade-cluster-") as scratch:
+        where = Path(scratch)
+        start = time.perf_counter()
+        positions, normals = write_inputs(where, vertices)
+        took = time.perf_counter() - start
+        print(f"wrote {vertices:,} float32 positions and normals in {took:.1f} s")
+        local_out, cluster_out = where / "rgba-local.npy", where / "rgba-cluster.npy"
+        rgba = np.lib.format.open_memmap(local_out, "w+", np.float32, (vertices, 4))
+
+        def local() -> None:
+            p, n = np.load(positions, mmap_mode="r"), np.load(normals, mmap_mode="r")
+            gs.shade(p, n, scene, out=rgba)
+            rgba.flush()
+
+        # One thread per worker process, and one for its glshade calls: the cluster uses as
+        # many cores as it has workers.
+        env = {"RAYON_NUM_THREADS": "1"}
+        with (
+            distributed.LocalCluster(
+                n_workers=workers,
+                threads_per_worker=1,
+                processes=True,
+                dashboard_address=None,
+                silence_logs=40,
+                env=env,
+            ) as cluster,
+            distributed.Client(cluster),
+        ):
+
+            def on_cluster() -> None:
+                lazy = gsd.shade(
+                    gsd.from_npy(positions, chunk), gsd.from_npy(normals, chunk), scene
+                )
+                gsd.to_npy(lazy, cluster_out)
+
+            times: dict[str, list[float]] = {"local": [], "cluster": []}
+            for round_ in range(repeat + 1):  # the first round warms both up
+                for name, run in (("local", local), ("cluster", on_cluster)):
+                    start = time.perf_counter()
+                    run()
+                    if round_:
+                        times[name].append(time.perf_counter() - start)
+        same = all(
+            np.array_equal(a, b)
+            for a, b in zip(
+                _chunks(np.load(local_out, mmap_mode="r")),
+                _chunks(np.load(cluster_out, mmap_mode="r")),
+                strict=True,
+            )
+        )
+    threads = os.cpu_count()
+    print(f"\nCPU: {cpu_model()}, {threads} logical cores; glshade {gs.__version__}")
+    print(f"scene: 8 mixed lights; {vertices:,} float32 vertices, memmap in, memmap out")
+    print(f"cluster: LocalCluster, {workers} worker processes x 1 thread, chunks of {chunk:,}\n")
+    print(f"  {'':36} {'median':>9} {'range':>17} {'Mvert/s':>9}")
+    for name, label in (
+        ("local", "one gs.shade call (all cores)"),
+        ("cluster", f"glshade.dask on {workers} workers"),
+    ):
+        seconds = times[name]
+        median = statistics.median(seconds)
+        print(
+            f"  {label:36} {median:8.2f}s {min(seconds):7.2f}-{max(seconds):.2f} s"
+            f" {vertices / median / 1e6:9.1f}"
+        )
+    print(f"\ncluster output bit-identical to the local call's: {same}")
+    return 0 if same else 1
+
+
+def _chunks(array: np.ndarray, rows: int = 1 << 22) -> list[np.ndarray]:
+    return [array[i : i + rows] for i in range(0, len(array), rows)]
