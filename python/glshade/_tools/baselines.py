@@ -1,20 +1,24 @@
-"""``python -m glshade bench shade``: `gs.shade` beside numpy and numba implementations of the
-same equation, timed in the same run.
+"""The GL equation transcribed once in numpy, in any float dtype, and compiled by numba: the
+baselines of ``python -m glshade bench shade`` and, evaluated in long double with a stable
+power, the reference of the report.
 
-The baselines are what a user writes today: the GL equation in float32 with a new RGBA array
-per call, numpy vectorised over vertices with a Python loop over lights, and numba compiled
-with ``parallel=True`` (a ``prange`` over vertices, all cores). Both precompute the per-light
-colour products and normalise directional lights once, as glshade does; the tests check that
-both agree with `gs.shade`.
+The baselines are what a user writes today: the GL equation (Blinn, GL's specular gate, one
+side) with a new RGBA array per call, numpy vectorised over vertices with a Python loop over
+lights, and numba compiled with ``parallel=True`` (a ``prange`` over vertices, all cores). Both
+read the scene through one light table (`light_table`, its columns named below) and normalise
+directional lights once, as glshade does; the tests check that both agree with `gs.shade`.
+
+The conventions are glshade's where GL says "undefined" (README): a light at the vertex gives
+VP = 0, a zero halfway vector no specular (0^0 = 1 for shininess 0), cos 90 deg = 0 exactly, an
+infinite weight times a zero colour nothing, and a non-finite input that is read makes its row
+NaN.
 """
 
 from __future__ import annotations
 
-import functools
 import os
-import statistics
-import time
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -22,92 +26,71 @@ from numpy.typing import NDArray
 
 import glshade as gs
 
-from ._bench import in_rounds
+__all__ = [
+    "Evaluation",
+    "constants",
+    "equation",
+    "light_table",
+    "naive_power",
+    "numba_shade",
+    "numpy_shade",
+    "stable_power",
+]
 
 F32 = NDArray[np.float32]
-SIZES = (10_000, 100_000, 1_000_000, 4_000_000)
+Power = Callable[[NDArray[Any], NDArray[Any], Any], NDArray[Any]]
+
+# The columns of `light_table`, one row per light; numba reads the same integers.
+W = 3  # position x, y, z in 0..2 (unit for directional lights, divided by w otherwise), w
+AMBIENT, DIFFUSE, SPECULAR = 4, 7, 10  # a_cm·a_cl, d_cm·d_cl, s_cm·s_cl (RGB each)
+SPOT = 13  # the unit spot direction (3)
+SPOT_EXPONENT, COS_CUTOFF = 16, 17  # cos cutoff: -2 for no cone (180), exactly 0 for 90
+K0, K1, K2 = 18, 19, 20  # constant, linear, quadratic attenuation
+# The columns of `constants`.
+BASE, ALPHA, SHININESS, VIEWER = 0, 3, 4, 5  # e_cm + a_cm·a_cs (RGB), alpha, s, viewer (xyzw)
 
 
-def bench_scenes() -> dict[str, gs.Scene]:
-    """The three scenes of the benchmark: one directional light (infinite viewer), one point
-    light with a local viewer, and eight mixed lights (directional, attenuated point, spot),
-    all with a Blinn-Phong specular term of shininess 32."""
-    material = gs.Material(specular=(0.5, 0.5, 0.5, 1.0), shininess=32.0)
-    grey = (0.3, 0.3, 0.3, 1.0)
-    mixed = [
-        gs.Light(position=(0.3, 0.5, 1.0, 0.0)),
-        gs.Light(position=(-1.0, 0.5, 1.0, 0.0), diffuse=grey, specular=grey),
-        gs.Light(position=(0.0, 3.0, 0.5, 0.0), diffuse=grey, specular=grey),
-        gs.Light(position=(1.0, 2.0, 3.0, 1.0), linear_attenuation=0.1, diffuse=grey),
-        gs.Light(position=(-2.0, 1.0, 3.0, 1.0), quadratic_attenuation=0.05, diffuse=grey),
-        gs.Light(position=(2.0, -1.0, 3.0, 1.0), linear_attenuation=0.2, quadratic_attenuation=0.1),
-        gs.Light(
-            position=(0.0, 0.0, 4.0, 1.0),
-            spot_direction=(0.0, 0.0, -1.0),
-            spot_cutoff=30.0,
-            spot_exponent=8.0,
-        ),
-        gs.Light(
-            position=(1.0, 1.0, 4.0, 1.0),
-            spot_direction=(-0.2, -0.2, -1.0),
-            spot_cutoff=45.0,
-            spot_exponent=2.0,
-            linear_attenuation=0.1,
-            ambient=(0.05, 0.05, 0.05, 1.0),
-        ),
-    ]
-    return {
-        "1 directional": gs.Scene([gs.Light(position=(0.3, 0.5, 1.0, 0.0))], material=material),
-        "1 point, local viewer": gs.Scene(
-            [gs.Light(position=(1.0, 2.0, 3.0, 1.0))], material=material, viewer=(0, 0, 0, 1)
-        ),
-        "8 mixed": gs.Scene(mixed, material=material, viewer=(0, 0, 0, 1)),
-    }
-
-
-def bench_vertices(n: int, seed: int = 0) -> tuple[F32, F32]:
-    """`n` float32 positions in front of the eye and unit normals facing it, at random."""
-    rng = np.random.default_rng(seed)
-    positions = rng.uniform((-1.0, -1.0, -4.0), (1.0, 1.0, -2.0), (n, 3)).astype(np.float32)
-    normals = rng.normal(size=(n, 3)) + np.array([0.0, 0.0, 1.5])
-    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
-    return positions, normals.astype(np.float32)
-
-
-def _light_table(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
-    """One row per light, computed in float64 and rounded to `dtype`: position xyz w
-    (directional ones normalised), the products a_cm·a_cl, d_cm·d_cl, s_cm·s_cl (RGB), the
-    unit spot direction, spot exponent, cos cutoff (-2 for no cone), k0, k1, k2."""
+def light_table(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
+    """The scene's lights, one row per light, computed in `dtype` (columns: the constants above)."""
     lights, m = scene.lights, scene.material
-    position = lights.position.copy()
+
+    def col(a: Any) -> NDArray[Any]:
+        return np.asarray(a).astype(dtype)
+
+    position = col(lights.position)
     directional = position[:, 3] == 0
-    position[directional, :3] /= np.linalg.norm(position[directional, :3], axis=1, keepdims=True)
-    position[~directional, :3] /= position[~directional, 3:]
-    spot = lights.spot_direction / np.linalg.norm(lights.spot_direction, axis=1, keepdims=True)
-    cutoff = lights.spot_cutoff
+    xyz = position[:, :3]
+    xyz[directional] /= np.sqrt((xyz[directional] ** 2).sum(axis=1, keepdims=True))
+    xyz[~directional] /= position[~directional, 3:]
+    spot = col(lights.spot_direction)
+    spot /= np.sqrt((spot**2).sum(axis=1, keepdims=True))
+    cutoff = np.asarray(lights.spot_cutoff)
     cos_cutoff = np.where(cutoff == 180.0, -2.0, np.cos(np.radians(cutoff)))
-    table = np.column_stack(
+    cos_cutoff = np.where(cutoff == 90.0, 0.0, cos_cutoff)  # exactly, as the spec's cos 90
+    return np.column_stack(
         [
             position,
-            lights.ambient[:, :3] * m.ambient[:3],
-            lights.diffuse[:, :3] * m.diffuse[:3],
-            lights.specular[:, :3] * m.specular[:3],
+            col(lights.ambient)[:, :3] * col(m.ambient)[:3],
+            col(lights.diffuse)[:, :3] * col(m.diffuse)[:3],
+            col(lights.specular)[:, :3] * col(m.specular)[:3],
             spot,
-            lights.spot_exponent,
-            cos_cutoff,
-            lights.constant_attenuation,
-            lights.linear_attenuation,
-            lights.quadratic_attenuation,
+            col(lights.spot_exponent),
+            col(cos_cutoff),
+            col(lights.constant_attenuation),
+            col(lights.linear_attenuation),
+            col(lights.quadratic_attenuation),
         ]
     )
-    return table.astype(dtype)
 
 
-def _constants(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
-    """emission + a_cm·a_cs (RGB), the diffuse alpha, the shininess, the viewer (xyzw)."""
+def constants(scene: gs.Scene, dtype: Any = np.float32) -> NDArray[Any]:
+    """e_cm + a_cm·a_cs (RGB), the diffuse alpha, the shininess, the viewer (xyzw), in `dtype`."""
     m = scene.material
-    base = m.emission[:3] + m.ambient[:3] * scene.global_ambient[:3]
-    return np.concatenate([base, [m.diffuse[3], m.shininess], scene.viewer]).astype(dtype)
+    e, a, g = (
+        np.asarray(c).astype(dtype)[:3] for c in (m.emission, m.ambient, scene.global_ambient)
+    )
+    rest = np.asarray([m.diffuse[3], m.shininess, *scene.viewer]).astype(dtype)
+    return np.concatenate([e + a * g, rest])
 
 
 def naive_power(normals: NDArray[Any], h: NDArray[Any], s: Any) -> NDArray[Any]:
@@ -116,47 +99,139 @@ def naive_power(normals: NDArray[Any], h: NDArray[Any], s: Any) -> NDArray[Any]:
     return power
 
 
+def stable_power(normals: NDArray[Any], h: NDArray[Any], s: Any) -> NDArray[Any]:
+    """(n . h)^s = |n|^s (1 - x)^s with x = |n^ - h|^2 / 2, which has no cancellation near the
+    highlight: exp(s (log1p(-x) + log |n|)), 0 where n . h <= 0."""
+    length = np.sqrt(np.einsum("ij,ij->i", normals, normals))[:, None]
+    d = normals / length - h
+    x = np.einsum("ij,ij->i", d, d)[:, None] / 2
+    with np.errstate(divide="ignore"):  # x = 1: log 0, then masked
+        power = np.exp(s * (np.log1p(-np.minimum(x, 1)) + np.log(length)))
+    out: NDArray[Any] = np.where(x < 1, power, 0)
+    return out
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """What `equation` computes per vertex: ``rgb``, the unclamped (n, 3) colour; with
+    ``account``, per channel ``magnitude`` (the sum of |terms|) and ``sensitivity`` (the sum of
+    (s tan theta / min(1, |VP + V|) + e tan phi) |term|, the condition numbers of the specular
+    and spot powers times their terms), and per vertex ``edge``, the distance to the nearest
+    discontinuity (|n^ . VP| where the specular gate has something to switch, |cos - cos
+    cutoff| at a cone's edge), inf where there is none."""
+
+    rgb: NDArray[Any]
+    magnitude: NDArray[Any] | None = None
+    sensitivity: NDArray[Any] | None = None
+    edge: NDArray[Any] | None = None
+
+
+def _unit(v: NDArray[Any]) -> tuple[NDArray[Any], NDArray[Any]]:
+    """v / |v| per row (0 where |v| = 0) and |v| as a column."""
+    length = np.sqrt(np.einsum("ij,ij->i", v, v))[:, None]
+    return np.divide(v, length, out=np.zeros_like(v), where=length > 0), length
+
+
+def _times(weight: Any, colour: NDArray[Any]) -> NDArray[Any]:
+    """weight · colour per channel, 0 where the colour is 0 (never inf · 0)."""
+    if (colour != 0).all():
+        out: NDArray[Any] = weight * colour
+        return out
+    return np.where(colour != 0, weight * colour, 0)
+
+
+def equation(
+    positions: NDArray[Any],
+    normals: NDArray[Any],
+    scene: gs.Scene,
+    power: Power = naive_power,
+    *,
+    account: bool = False,
+) -> Evaluation:
+    """The GL equation (eqs. 2.2-2.5: Blinn, GL's specular gate, one side, no clamp) in the
+    dtype of `positions`, with `power(n, h^, s)` the specular power for s > 0.
+
+    Parameters
+    ----------
+    positions, normals : (n, 3) arrays of one float dtype
+        Eye-space vertices, normals as given (not normalised).
+    scene : Scene
+        Its lights, material, global ambient and viewer (other settings are not read).
+    power : callable
+        ``power(normals, unit_halfway, shininess)`` -> (n, 1).
+    account : bool
+        Also the magnitudes, sensitivities and distances to a discontinuity (`Evaluation`).
+    """
+    dtype = positions.dtype
+    table, k = light_table(scene, dtype), constants(scene, dtype)
+    eye = k[VIEWER : VIEWER + 4]
+    view = _unit(eye[:3] / eye[3] - positions)[0] if eye[3] != 0 else _unit(eye[None, :3])[0]
+    rgb = np.broadcast_to(k[BASE : BASE + 3], positions.shape).copy()
+    shininess = k[SHININESS]
+    if account:
+        magnitude, sensitivity = np.abs(rgb), np.zeros_like(rgb)
+        edge, n_hat = np.full((len(positions), 1), np.inf, dtype), _unit(normals)[0]
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        for row in table:
+            weight: Any = dtype.type(1.0)
+            spot_condition: Any = 0
+            if row[W] == 0:
+                vp = np.broadcast_to(row[:3], positions.shape)
+            else:
+                vp, d = _unit(row[:3] - positions)
+                weight = 1 / (row[K0] + row[K1] * d + row[K2] * d * d)
+            if row[COS_CUTOFF] > -2:  # a cone, on directional lights too
+                c = np.maximum(-(vp @ row[SPOT : SPOT + 3]), 0)[:, None]
+                inside = c >= row[COS_CUTOFF]
+                weight = weight * np.where(inside, c ** row[SPOT_EXPONENT], 0)
+                if account:
+                    tan = np.sqrt(np.maximum(1 - c * c, 0)) / c
+                    spot_condition = np.where((c > 0) & (c < 1), row[SPOT_EXPONENT] * tan, 0)
+                    if row[COS_CUTOFF] ** row[SPOT_EXPONENT] != 0:  # the cone's edge jumps
+                        edge = np.minimum(edge, np.abs(c - row[COS_CUTOFF]))
+            ambient = _times(weight, row[AMBIENT : AMBIENT + 3])
+            n_dot_vp = np.einsum("ij,ij->i", normals, vp)[:, None]
+            lit = n_dot_vp > 0
+            diffuse = np.where(lit, _times(weight * n_dot_vp, row[DIFFUSE : DIFFUSE + 3]), 0)
+            h_hat, h_length = _unit(vp + view)
+            specular_colour = row[SPECULAR : SPECULAR + 3]
+            if shininess == 0:  # 0^0 = 1, also for a zero halfway vector
+                spec_power: Any = np.ones_like(n_dot_vp)
+            else:
+                spec_power = np.where(h_length > 0, power(normals, h_hat, shininess), 0)
+            specular = np.where(lit, _times(weight * spec_power, specular_colour), 0)
+            rgb += ambient + diffuse + specular
+            if account:
+                terms = np.abs(ambient) + np.abs(diffuse) + np.abs(specular)
+                magnitude += terms
+                cos = np.clip(np.einsum("ij,ij->i", n_hat, h_hat)[:, None], 1e-300, 1)
+                # ĥ's direction is as uncertain as u / |VP + V|: L + V near 0 amplifies it.
+                tan_theta = np.sqrt(1 - cos * cos) / cos / np.minimum(h_length, 1)
+                powered = np.where(specular != 0, shininess * tan_theta * np.abs(specular), 0)
+                sensitivity += powered + spot_condition * terms
+                if (specular_colour != 0).any():  # the gate has something to switch
+                    gate = np.abs(np.einsum("ij,ij->i", n_hat, vp))[:, None]
+                    edge = np.minimum(edge, np.where(spec_power * weight > 0, gate, np.inf))
+    unread = ~np.isfinite(normals).all(axis=1)
+    if eye[3] != 0 or (table[:, W] != 0).any():
+        unread |= ~np.isfinite(positions).all(axis=1)
+    rgb[unread] = np.nan  # a non-finite input makes its row NaN, and no other row
+    if not account:
+        return Evaluation(rgb)
+    return Evaluation(rgb, magnitude, sensitivity, edge[:, 0])
+
+
 def numpy_shade(
     positions: NDArray[Any],
     normals: NDArray[Any],
     scene: gs.Scene,
-    power: Callable[[NDArray[Any], NDArray[Any], Any], Any] = naive_power,
+    power: Power = naive_power,
 ) -> NDArray[Any]:
-    """The GL equation (Blinn, GL's specular gate, no two-sided lighting) in numpy, in the
-    dtype of `positions` (float32 for the benchmark), with `power(n, h, s)` the specular
-    power for s > 0."""
-    dtype = positions.dtype
-    table, k = _light_table(scene, dtype), _constants(scene, dtype)
-    local = k[8] != 0
-    if local:
-        view = k[5:8] - positions
-        view /= np.linalg.norm(view, axis=1, keepdims=True)
-    else:
-        view = np.broadcast_to(k[5:8] / np.linalg.norm(k[5:8]), positions.shape)
-    rgb = np.broadcast_to(k[:3], positions.shape).copy()
-    for row in table:
-        if row[3] == 0:
-            vp = np.broadcast_to(row[:3], positions.shape)
-            weight = dtype.type(1.0)
-        else:
-            vp = row[:3] - positions
-            d = np.linalg.norm(vp, axis=1, keepdims=True)
-            vp = vp / d
-            weight = 1 / (row[18] + row[19] * d + row[20] * d * d)
-            if row[17] > -2:
-                c = -(vp @ row[13:16])[:, None]
-                weight = weight * np.where(c >= row[17], np.maximum(c, 0) ** row[16], 0)
-        rgb += weight * row[4:7]
-        n_dot_vp = np.einsum("ij,ij->i", normals, vp)[:, None]
-        lit = n_dot_vp > 0
-        rgb += np.where(lit, weight * n_dot_vp, 0) * row[7:10]
-        h = vp + view
-        h /= np.linalg.norm(h, axis=1, keepdims=True)
-        specular = power(normals, h, k[4]) if k[4] != 0 else dtype.type(1.0)
-        rgb += np.where(lit, weight * specular, 0) * row[10:13]
-    out = np.zeros((len(positions), 4), dtype)
+    """`equation` clamped, as `gs.shade` returns it: (n, 4) in the dtype of `positions`."""
+    rgb = equation(positions, normals, scene, power).rgb
+    out = np.zeros((len(positions), 4), positions.dtype)
     out[:, :3] = np.clip(rgb, 0, 1)
-    out[:, 3] = np.clip(k[3], 0, 1)
+    out[:, 3] = np.clip(constants(scene, positions.dtype)[ALPHA], 0, 1)
     return out
 
 
@@ -177,140 +252,51 @@ def numba_shade() -> Callable[[F32, F32, gs.Scene], F32] | str:
         for i in numba.prange(len(p)):
             px, py, pz = p[i, 0], p[i, 1], p[i, 2]
             nx, ny, nz = n[i, 0], n[i, 1], n[i, 2]
-            vx, vy, vz = k[5], k[6], k[7]
-            if k[8] != zero:
-                vx, vy, vz = vx - px, vy - py, vz - pz
+            vx, vy, vz = k[VIEWER], k[VIEWER + 1], k[VIEWER + 2]
+            if k[VIEWER + 3] != zero:
+                w = k[VIEWER + 3]
+                vx, vy, vz = vx / w - px, vy / w - py, vz / w - pz
             length = np.sqrt(vx * vx + vy * vy + vz * vz)
             vx, vy, vz = vx / length, vy / length, vz / length
-            r, g, b = k[0], k[1], k[2]
+            r, g, b = k[BASE], k[BASE + 1], k[BASE + 2]
             for j in range(len(table)):
                 row = table[j]
                 lx, ly, lz = row[0], row[1], row[2]
                 weight = one
-                if row[3] != zero:
+                if row[W] != zero:
                     lx, ly, lz = lx - px, ly - py, lz - pz
                     d = np.sqrt(lx * lx + ly * ly + lz * lz)
                     lx, ly, lz = lx / d, ly / d, lz / d
-                    weight = one / (row[18] + row[19] * d + row[20] * d * d)
-                    if row[17] > np.float32(-2.0):
-                        c = -(lx * row[13] + ly * row[14] + lz * row[15])
-                        weight = weight * (max(c, zero) ** row[16] if c >= row[17] else zero)
-                r += weight * row[4]
-                g += weight * row[5]
-                b += weight * row[6]
+                    weight = one / (row[K0] + row[K1] * d + row[K2] * d * d)
+                if row[COS_CUTOFF] > np.float32(-2.0):
+                    c = -(lx * row[SPOT] + ly * row[SPOT + 1] + lz * row[SPOT + 2])
+                    c = max(c, zero)
+                    weight = weight * (c ** row[SPOT_EXPONENT] if c >= row[COS_CUTOFF] else zero)
+                r += weight * row[AMBIENT]
+                g += weight * row[AMBIENT + 1]
+                b += weight * row[AMBIENT + 2]
                 n_dot_vp = nx * lx + ny * ly + nz * lz
                 if n_dot_vp > zero:
                     diffuse = weight * n_dot_vp
-                    r += diffuse * row[7]
-                    g += diffuse * row[8]
-                    b += diffuse * row[9]
+                    r += diffuse * row[DIFFUSE]
+                    g += diffuse * row[DIFFUSE + 1]
+                    b += diffuse * row[DIFFUSE + 2]
                     hx, hy, hz = lx + vx, ly + vy, lz + vz
                     length = np.sqrt(hx * hx + hy * hy + hz * hz)
                     n_dot_h = max((nx * hx + ny * hy + nz * hz) / length, zero)
-                    power = n_dot_h ** k[4] if k[4] != zero else one
+                    power = n_dot_h ** k[SHININESS] if k[SHININESS] != zero else one
                     specular = weight * power
-                    r += specular * row[10]
-                    g += specular * row[11]
-                    b += specular * row[12]
+                    r += specular * row[SPECULAR]
+                    g += specular * row[SPECULAR + 1]
+                    b += specular * row[SPECULAR + 2]
             out[i, 0] = min(max(r, zero), one)
             out[i, 1] = min(max(g, zero), one)
             out[i, 2] = min(max(b, zero), one)
-            out[i, 3] = min(max(k[3], zero), one)
+            out[i, 3] = min(max(k[ALPHA], zero), one)
 
     def shade(positions: F32, normals: F32, scene: gs.Scene) -> F32:
         out = np.zeros((len(positions), 4), np.float32)
-        kernel(positions, normals, _light_table(scene), _constants(scene), out)
+        kernel(positions, normals, light_table(scene), constants(scene), out)
         return out
 
     return shade
-
-
-def call_overhead(repeat: int = 2000) -> float:
-    """Median seconds of `gs.shade` on 16 float32 vertices and one directional light."""
-    scene = gs.Scene([gs.Light()])
-    p, n = bench_vertices(16)
-    for _ in range(100):
-        gs.shade(p, n, scene)
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        gs.shade(p, n, scene)
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
-BURST = 3
-
-
-def wake_cost(n: int = 1_000_000, repeat: int = 7) -> tuple[float, float]:
-    """Median seconds of `gs.shade` (one directional light, `n` vertices) right after 50 ms of
-    idle, and back to back."""
-    scene = bench_scenes()["1 directional"]
-    p, normals = bench_vertices(n)
-    cold: list[float] = []
-    warm: list[float] = []
-    for _ in range(repeat):
-        time.sleep(0.05)
-        for times in (cold, warm):
-            start = time.perf_counter()
-            gs.shade(p, normals, scene)
-            times.append(time.perf_counter() - start)
-    return statistics.median(cold), statistics.median(warm)
-
-
-def bench_shade(sizes: tuple[int, ...], repeat: int) -> int:
-    """Prints, for every scene and size, the median million vertices per second of glshade,
-    numpy and numba, and glshade's speed-up over each (the median of per-round ratios)."""
-    numba = numba_shade()
-    threads = os.environ.get("RAYON_NUM_THREADS") or f"{os.cpu_count()} (all cores)"
-    print(
-        f"float32, a new (n, 4) array per call; {repeat} rounds; in each round every method "
-        f"runs {BURST} times in a row and its fastest call counts"
-    )
-    print(f"glshade threads: {threads}; numpy {np.__version__}", end="")
-    if isinstance(numba, str):
-        print(f"\n{numba}")
-    else:
-        import numba as nb
-
-        # Compiles the kernel and starts the threading layer, which is named only after that.
-        numba(*bench_vertices(64), bench_scenes()["1 directional"])
-        layer = nb.threading_layer()  # type: ignore[attr-defined]
-        print(
-            f"; numba {nb.__version__} (parallel=True, {nb.get_num_threads()} threads, "
-            f"{layer} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
-        )
-    print(f"per-call overhead: {call_overhead() * 1e6:.1f} us (16 vertices, one light, median)")
-    cold, warm = wake_cost()
-    print(
-        f"waking idle cores: {cold * 1e3:.2f} ms for the first call after 50 ms of idle, "
-        f"{warm * 1e3:.2f} ms for the next (10^6 vertices, one light, medians)"
-    )
-    for name, scene in bench_scenes().items():
-        print(f"\n{name}: {scene.plan()}")
-        print(
-            f"  {'vertices':>10} {'glshade':>9} {'numpy':>9} {'numba':>9}"
-            f"   {'x numpy':>8} {'x numba':>8}   (million vertices/s, medians)"
-        )
-        for n in sizes:
-            p, normals = bench_vertices(n)
-            methods: dict[str, Callable[[], Any]] = {
-                "glshade": functools.partial(gs.shade, p, normals, scene),
-                "numpy": functools.partial(numpy_shade, p, normals, scene),
-            }
-            if not isinstance(numba, str):
-                methods["numba"] = functools.partial(numba, p, normals, scene)
-            times = in_rounds(methods, repeat, settle=0.0, burst=BURST)
-            rate = {k: n / statistics.median(t) / 1e6 for k, t in times.items()}
-
-            def ratio(baseline: str, times: dict[str, list[float]] = times) -> str:
-                if baseline not in times:
-                    return f"{'-':>8}"
-                pairs = zip(times[baseline], times["glshade"], strict=True)
-                return f"{statistics.median(b / o for b, o in pairs):7.1f}x"
-
-            print(
-                f"  {n:>10,} {rate['glshade']:9.1f} {rate['numpy']:9.1f} "
-                f"{rate.get('numba', float('nan')):9.1f}   {ratio('numpy')} {ratio('numba')}"
-            )
-    return 0

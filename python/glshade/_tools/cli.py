@@ -1,25 +1,43 @@
-"""Command line: ``python -m glshade demo``."""
+"""Command line: ``python -m glshade demo|report|bench shade|bench normals|bench render``."""
 
 from __future__ import annotations
 
 import argparse
-import sys
 from collections.abc import Sequence
+from pathlib import Path
 
-from ._bench import bench_normals, bench_render
-from ._bench_shade import SIZES, bench_shade
-from ._demo import demo
-from ._report import report
+__all__ = ["main"]
 
 
-def main(argv: Sequence[str] | None = None) -> int:
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {value}")
+    return value
+
+
+def _at_least_two(text: str) -> int:
+    value = int(text)
+    if value < 2:
+        raise argparse.ArgumentTypeError(f"must be at least 2, got {value}")
+    return value
+
+
+def _not_negative(text: str) -> float:
+    value = float(text)
+    if not value >= 0:
+        raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
+    return value
+
+
+def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m glshade", description=__doc__)
     commands = parser.add_subparsers(dest="command", required=True)
     run = commands.add_parser(
         "demo", help="shade and render a built-in scene, print timings, write PNGs"
     )
-    run.add_argument("--size", type=int, default=1024, help="image size in pixels (default 1024)")
-    run.add_argument("--repeat", type=int, default=7, help="timed runs per dtype (default 7)")
+    run.add_argument("--size", type=_positive, default=1024, help="image size (default 1024)")
+    run.add_argument("--repeat", type=_positive, default=7, help="timed rounds (default 7)")
     run.add_argument(
         "--output",
         default="glshade-demo.png",
@@ -27,64 +45,78 @@ def main(argv: Sequence[str] | None = None) -> int:
         "it with -flat, -gouraud and -phong added to the name",
     )
     rep = commands.add_parser(
-        "report", help="error against run time of every accuracy mode and dtype, with studies"
+        "report",
+        help="error against run time of every scene class, dtype, accuracy mode and "
+        "instruction set, with studies; writes report.md, .json, .csv and figures",
     )
-    rep.add_argument("--vertices", type=int, default=200_000, help="per scene (default 2*10^5)")
-    rep.add_argument("--repeat", type=int, default=7, help="timed calls per row (default 7)")
+    rep.add_argument("--out", default="glshade-report", help="directory (default ./glshade-report)")
     rep.add_argument(
-        "--output",
-        default="glshade-report.md",
-        help="Markdown path (default ./glshade-report.md); the plot goes beside it as .png",
+        "--vertices", type=_positive, default=100_000, help="per scene class (default 10^5)"
     )
-    bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
-    bench.add_argument(
-        "what",
-        choices=["shade", "normals", "render"],
-        help="shade: gs.shade beside numpy and numba; normals: vertex and face normals beside "
-        "trimesh; render: gs.render beside moderngl on Mesa's llvmpipe",
-    )
-    bench.add_argument(
-        "--sizes",
-        type=int,
+    rep.add_argument("--rounds", type=_positive, default=7, help="timed rounds (default 7)")
+    rep.add_argument(
+        "--isa",
         nargs="+",
-        default=list(SIZES),
-        help="shade: vertex counts (default 10^4 10^5 10^6 4*10^6)",
+        choices=["avx512", "avx2", "baseline"],
+        help="instruction sets (default: every one this CPU runs)",
     )
-    bench.add_argument(
-        "--faces", type=int, help="mesh size (default 10^6 for normals, 10^5 for render)"
+    rep.add_argument("--no-studies", action="store_true", help="leave out the two studies")
+    rep.add_argument("--quiet", action="store_true", help="no progress bar")
+    bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
+    which = bench.add_subparsers(dest="what", required=True)
+    shade = which.add_parser("shade", help="gs.shade beside numpy and numba")
+    shade.add_argument(
+        "--sizes",
+        type=_positive,
+        nargs="+",
+        default=[10_000, 100_000, 1_000_000, 4_000_000],
+        help="vertex counts (default 10^4 10^5 10^6 4*10^6)",
     )
-    bench.add_argument("--size", type=int, default=1024, help="render: image size (default 1024)")
-    bench.add_argument("--repeat", type=int, default=7, help="rounds (default 7)")
-    bench.add_argument(
+    normals = which.add_parser("normals", help="vertex and face normals beside trimesh")
+    normals.add_argument("--faces", type=_at_least_two, default=1_000_000, help="default 10^6")
+    normals.add_argument(
         "--settle",
-        type=float,
+        type=_not_negative,
         default=0.25,
-        help="normals: seconds of idle before each timed call (default 0.25)",
+        help="seconds of idle before each timed call (default 0.25)",
     )
-    args = parser.parse_args(argv)
-    if args.repeat < 1:
-        parser.error("--repeat must be positive")
-    if getattr(args, "size", 1) < 1:
-        parser.error("--size must be positive")
+    render = which.add_parser("render", help="gs.render beside moderngl on Mesa's llvmpipe")
+    render.add_argument("--faces", type=_at_least_two, default=100_000, help="default 10^5")
+    render.add_argument("--size", type=_positive, default=1024, help="image size (default 1024)")
+    for sub, name in ((shade, "shade"), (normals, "normals"), (render, "render")):
+        sub.add_argument("--repeat", type=_positive, default=7, help="rounds (default 7)")
+        sub.add_argument(
+            "--json",
+            default=f"glshade-bench-{name}.json",
+            help=f"where the results go, with the machine (default ./glshade-bench-{name}.json)",
+        )
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Parses `argv` (default: the command line) and runs the command; its exit status."""
+    args = _parser().parse_args(argv)
     if args.command == "report":
-        if args.vertices < 1:
-            parser.error("--vertices must be positive")
-        return report(args.vertices, args.repeat, args.output)
-    if args.command == "bench" and args.what == "shade":
-        if min(args.sizes) < 1:
-            parser.error("--sizes must be positive")
-        return bench_shade(tuple(args.sizes), args.repeat)
+        import glshade as gs
+
+        result = gs.report(
+            vertices=args.vertices,
+            rounds=args.rounds,
+            isas=args.isa,
+            studies=not args.no_studies,
+            progress=not args.quiet,
+        )
+        for path in result.write(Path(args.out)):
+            print(f"wrote {path}")
+        return 0
     if args.command == "bench":
-        faces = args.faces or (1_000_000 if args.what == "normals" else 100_000)
-        if faces < 2:
-            parser.error("--faces must be at least 2")
-        if not args.settle >= 0:
-            parser.error("--settle must not be negative")
+        from . import bench, bench_shade
+
+        if args.what == "shade":
+            return bench_shade.bench_shade(tuple(args.sizes), args.repeat, args.json)
         if args.what == "render":
-            return bench_render(faces, args.size, args.repeat)
-        return bench_normals(faces, args.repeat, args.settle)
+            return bench.bench_render(args.faces, args.size, args.repeat, args.json)
+        return bench.bench_normals(args.faces, args.repeat, args.settle, args.json)
+    from .demo import demo
+
     return demo(args.size, args.repeat, args.output)
-
-
-if __name__ == "__main__":
-    sys.exit(main())
