@@ -16,14 +16,11 @@ from .baselines import numba_shade, numpy_shade
 from .bench import save
 from .machine import describe, machine
 from .scenes import bench_scenes, bench_vertices
-from .timing import ratio, time_rounds
+from .timing import BURST, ratio, time_rounds
 
 __all__ = ["BURST", "SIZES", "bench_shade", "call_overhead", "wake_cost"]
 
 SIZES = (10_000, 100_000, 1_000_000, 4_000_000)
-# Calls per turn, the fastest counting: the first call after numpy's single-threaded baseline
-# pays for waking the idle second core and, often, for fresh pages of the new result.
-BURST = 3
 
 
 def call_overhead(repeat: int = 2000) -> float:

@@ -53,7 +53,7 @@ def _parser() -> argparse.ArgumentParser:
     rep.add_argument(
         "--vertices", type=_positive, default=100_000, help="per scene class (default 10^5)"
     )
-    rep.add_argument("--rounds", type=_positive, default=7, help="timed rounds (default 7)")
+    rep.add_argument("--rounds", type=_positive, default=9, help="timed rounds (default 9)")
     rep.add_argument(
         "--isa",
         nargs="+",

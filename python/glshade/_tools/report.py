@@ -241,7 +241,7 @@ def _run_worker(isa: str, files: list[Path], rounds: int, progress: Progress) ->
 def report(
     *,
     vertices: int = 100_000,
-    rounds: int = 7,
+    rounds: int = 9,
     isas: Sequence[str] | None = None,
     scenes: Sequence[str] | None = None,
     studies: bool = True,
@@ -254,8 +254,9 @@ def report(
     vertices : int
         Vertices per scene class (>= 1; the thousand-light class takes a hundredth).
     rounds : int
-        Timed rounds (>= 1); a row's time is the median over them, with the fastest and the
-        slowest round as its spread.
+        Timed rounds (>= 1); in each, every call runs `timing.BURST` times in a row and the
+        fastest counts, as in ``bench shade``; a row's time is the median over the rounds, with
+        the fastest and the slowest round as its spread.
     isas : sequence of str, optional
         Instruction sets among ``"avx512"``, ``"avx2"``, ``"baseline"``; by default every one
         this CPU runs. A set the CPU lacks is left out.

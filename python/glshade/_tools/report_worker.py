@@ -24,7 +24,7 @@ import glshade as gs
 from .bounds import BOUNDS
 from .machine import instruction_set
 from .report import MODES, error_statistics
-from .timing import time_rounds
+from .timing import BURST, time_rounds
 
 
 def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact"]) -> dict[str, Any]:
@@ -79,7 +79,7 @@ def main(argv: list[str]) -> int:
     def step() -> None:
         print(json.dumps({"step": "timing"}), flush=True)
 
-    timings = time_rounds(calls, rounds, on_round=step)
+    timings = time_rounds(calls, rounds, burst=BURST, on_round=step)
     rows = []
     for key, row in partial.items():
         t, ns = timings[key], 1e9 / row["vertices"]
