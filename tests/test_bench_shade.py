@@ -1,5 +1,9 @@
 """The baselines of ``python -m glshade bench shade`` compute the equation glshade computes, so
-the benchmark compares like with like (checked here; the timing itself is never a test)."""
+the benchmark compares like with like (checked here; the timing itself is never a test); each
+bench accepts only its own flags and saves its results as JSON with the machine."""
+
+import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -7,7 +11,9 @@ from conftest import require
 
 import glshade as gs
 from glshade import __main__ as cli
-from glshade._bench_shade import bench_scenes, bench_vertices, numba_shade, numpy_shade
+from glshade._tools.baselines import numba_shade, numpy_shade
+from glshade._tools.scenes import bench_scenes, bench_vertices
+from glshade._tools.timing import Timing, ratio, time_rounds
 
 SCENES = bench_scenes()
 
@@ -50,14 +56,71 @@ def test_the_scenes_are_those_of_the_issue() -> None:
     assert {"directional", "point attenuated", "point spot"} <= set(kinds[2])
 
 
-def test_bench_shade_runs_and_prints_every_scene(capsys: pytest.CaptureFixture[str]) -> None:
-    assert cli.main(["bench", "shade", "--sizes", "100", "--repeat", "1"]) == 0
+def test_bench_shade_runs_prints_every_scene_and_saves_json(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    path = tmp_path / "b.json"
+    args = ["bench", "shade", "--sizes", "100", "200", "--repeat", "2", "--json", str(path)]
+    assert cli.main(args) == 0
     out = capsys.readouterr().out
     for name in SCENES:
         assert f"\n{name}: fast: float32" in out
-    assert "per-call overhead" in out
+    assert "per-call overhead" in out and f"wrote {path}" in out
+    saved = json.loads(path.read_text())
+    assert saved["bench"] == "shade" and saved["settings"]["sizes"] == [100, 200]
+    assert {"cpu", "instruction_set", "threads", "glshade", "numpy", "python"} <= set(
+        saved["machine"]
+    )
+    assert [(r["scene"], r["vertices"]) for r in saved["results"]["scenes"]] == [
+        (name, n) for name in SCENES for n in (100, 200)
+    ]
+    for r in saved["results"]["scenes"]:
+        glshade = r["ms"]["glshade"]
+        assert len(glshade["rounds"]) == 2
+        assert glshade["low"] <= glshade["median"] <= glshade["high"]
+        # The speed-up is the median of the per-round ratios of the saved times.
+        per_round = [
+            b / o for b, o in zip(r["ms"]["numpy"]["rounds"], glshade["rounds"], strict=True)
+        ]
+        assert r["speedup"]["numpy"]["median"] == pytest.approx(np.median(per_round))
 
 
-def test_bench_shade_rejects_bad_sizes() -> None:
-    with pytest.raises(SystemExit):
-        cli.main(["bench", "shade", "--sizes", "0"])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["bench", "shade", "--sizes", "0"],
+        ["bench", "shade", "--faces", "100"],  # another bench's flag
+        ["bench", "shade", "--settle", "0"],
+        ["bench", "normals", "--sizes", "100"],
+        ["bench", "render", "--settle", "0"],
+        ["bench", "normals", "--faces", "1"],
+        ["bench", "normals", "--settle", "-1"],
+        ["bench", "render", "--size", "0"],
+        ["report", "--vertices", "0"],
+        ["report", "--isa", "sse"],
+        ["bench", "cluster", "--chunk", "0"],
+        ["bench", "cluster", "--sizes", "100"],
+    ],
+)
+def test_each_command_accepts_only_its_own_valid_flags(
+    args: list[str], capsys: pytest.CaptureFixture[str]
+) -> None:
+    with pytest.raises(SystemExit) as stop:
+        cli.main(args)
+    assert stop.value.code == 2
+    assert "error:" in capsys.readouterr().err
+
+
+def test_time_rounds_rotates_the_order_and_reports_median_and_spread() -> None:
+    calls: list[str] = []
+    methods = {name: (lambda name=name: calls.append(name)) for name in "abc"}
+    times = time_rounds(methods, 4)
+    assert calls[:3] == ["a", "b", "c"]  # the warm-up
+    rounds = [calls[3 + 3 * r : 6 + 3 * r] for r in range(4)]
+    assert rounds == [list("abc"), list("acb"), list("cab"), list("cba")]
+    assert all(len(t.seconds) == 4 for t in times.values())
+    t = Timing((3.0, 1.0, 2.0, 10.0))
+    assert (t.median, t.low, t.high) == (2.5, 1.0, 10.0)
+    assert ratio(Timing((2.0, 6.0)), Timing((1.0, 2.0))).seconds == (2.0, 3.0)
+    with pytest.raises(ValueError, match="rounds and burst must be >= 1, got 0 and 1"):
+        time_rounds(methods, 0)

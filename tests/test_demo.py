@@ -3,6 +3,7 @@ run beside their baselines."""
 
 from __future__ import annotations
 
+import json
 import struct
 import subprocess
 import sys
@@ -63,16 +64,18 @@ def test_png_round_trip(tmp_path: Path) -> None:
         write_png(tmp_path / "y.png", image[..., :3])
 
 
-def test_bench_normals_runs_beside_trimesh() -> None:
+def test_bench_normals_runs_beside_trimesh(tmp_path: Path) -> None:
     from conftest import require
 
     require("trimesh")
+    path = tmp_path / "normals.json"
     run = subprocess.run(
         [
             sys.executable,
             "-m",
             "glshade",
-            *"bench normals --faces 2000 --repeat 2 --settle 0".split(),
+            *"bench normals --faces 2000 --repeat 2 --settle 0 --json".split(),
+            str(path),
         ],
         capture_output=True,
         text=True,
@@ -82,13 +85,20 @@ def test_bench_normals_runs_beside_trimesh() -> None:
     assert "speed-up over trimesh" in run.stdout
     difference = float(run.stdout.split("angle weighting, float64:")[1].split()[0])
     assert difference < 1e-12
+    saved = json.loads(path.read_text())
+    assert saved["bench"] == "normals" and saved["machine"]["cpu"]
+    assert saved["results"]["max_difference_from_trimesh"] < 1e-12
+    speedup = saved["results"]["speedup_over_trimesh"]["face normals, float64"]
+    assert len(speedup["rounds"]) == 2 and speedup["low"] <= speedup["median"] <= speedup["high"]
 
 
-def test_bench_render_runs_beside_llvmpipe() -> None:
+def test_bench_render_runs_beside_llvmpipe(tmp_path: Path) -> None:
     from conftest import require
 
     require("moderngl")
-    args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2"]
+    path = tmp_path / "render.json"
+    args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2", "--json"]
+    args.append(str(path))
     run = subprocess.run(
         [sys.executable, "-m", "glshade", *args],
         cwd=Path(__file__).resolve().parent.parent,  # the checkout: tests/glpeers.py
@@ -100,3 +110,6 @@ def test_bench_render_runs_beside_llvmpipe() -> None:
         assert f"glshade {shading}" in run.stdout and f"llvmpipe {shading}" in run.stdout
         line = run.stdout.split("speed-up")[1].split(f"\n  {shading}")[1].split()
         assert float(line[0].rstrip("%")) > 99.0, line  # the same picture, pixel for pixel
+    saved = json.loads(path.read_text())
+    assert saved["bench"] == "render" and saved["settings"]["size"] == 96
+    assert min(saved["results"]["agreeing_pixels"].values()) > 0.99

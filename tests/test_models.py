@@ -607,7 +607,7 @@ def test_area_lights_converge_to_the_analytic_irradiance(k: int, rel: float) -> 
     # Isotropic points of total colour c with 1/d^2 attenuation, on the axis h below:
     # (c / area) * integral of cos / d^2 dA = c * (solid angle of the light) / area.
     # k = 4181 is a Fibonacci number, where the lattice is a true Fibonacci lattice.
-    from glshade._studies import area_light_closed_form
+    from glshade._tools.studies import area_light_closed_form
 
     h, a, b, radius, c = 0.7, 0.5, 0.25, 0.6, 0.25
     light = {"diffuse": (c, c, c), "constant_attenuation": 0.0, "quadratic_attenuation": 1.0}
@@ -627,7 +627,7 @@ def test_area_lights_converge_to_the_analytic_irradiance(k: int, rel: float) -> 
 
 
 def test_area_light_error_falls_with_k() -> None:
-    from glshade._studies import area_light_convergence
+    from glshade._tools.studies import area_light_convergence
 
     rows = area_light_convergence(ks=(1, 4, 16, 64, 256), reference_k=4096, grid=24, repeat=1)
     assert [row["k"] for row in rows] == [1, 4, 16, 64, 256]

@@ -100,7 +100,7 @@ def test_float32_is_the_float64_result_rounded_once(weighting: str) -> None:
 # Every normal of a 10^5-face mesh, both dtypes, as one digest.
 DIGEST = """
 import hashlib, numpy as np, glshade as gs
-from glshade._bench import grid_mesh
+from glshade._tools.bench import grid_mesh
 v, f = grid_mesh(100_000)
 f = np.random.default_rng(0).permutation(f)  # scattered faces: long adjacency lists
 digest = hashlib.sha256()

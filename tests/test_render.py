@@ -16,7 +16,7 @@ from hypothesis import given
 from hypothesis import strategies as st
 
 import glshade as gs
-from glshade._meshes import icosphere, torus
+from glshade._tools.meshes import icosphere, torus
 
 SHINY = gs.Scene(
     lights=[
@@ -437,7 +437,7 @@ def test_background_and_model_matrix() -> None:
 def test_results_do_not_depend_on_the_thread_count(tmp_path: Path) -> None:
     code = (
         "import sys, numpy as np, glshade as gs\n"
-        "from glshade._meshes import torus\n"
+        "from glshade._tools.meshes import torus\n"
         "v, f = torus(60, 40)\n"
         "cam = gs.Camera.look_at((0, -2.5, 2), (0, 0, 0), (0, 0, 1))\n"
         "scene = gs.Scene(lights=[gs.Light(position=(1, 1, 1, 0))], two_side=True)\n"

@@ -6,7 +6,7 @@ import itertools
 
 import numpy as np
 
-from glshade._studies import gouraud_vs_phong
+from glshade._tools.studies import gouraud_vs_phong
 
 
 def test_gouraud_error_falls_as_the_sphere_is_refined() -> None:

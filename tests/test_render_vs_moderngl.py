@@ -17,7 +17,7 @@ import pytest
 
 import glpeers
 import glshade as gs
-from glshade._meshes import icosphere, torus
+from glshade._tools.meshes import icosphere, torus
 
 # The bar (the issue's): colours of 99.5% of the pixels both cover within 1e-4, coverage
 # different only on edges and on fewer than 0.5% of the pixels, depth within 1e-6.

@@ -20,7 +20,7 @@ from conftest import require
 
 import glpeers  # first: it sets PYOPENGL_PLATFORM=egl before OpenGL is imported
 import glshade as gs
-from glshade._meshes import icosphere, torus
+from glshade._tools.meshes import icosphere, torus
 
 # Where pyrender's depth sample lies, in pixels from the pixel centre, GL window coordinates.
 SAMPLE_0 = (-0.125, -0.375)

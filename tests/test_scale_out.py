@@ -8,6 +8,7 @@ glshade's result for a row does not depend on how the rows are split.
 from __future__ import annotations
 
 import importlib
+import json
 import os
 import pickle
 import subprocess
@@ -81,7 +82,7 @@ def client() -> Iterator[Any]:
             n_workers=2,
             threads_per_worker=1,
             processes=True,
-            dashboard_address=None,
+            dashboard_address=":0",
             silence_logs=40,
         ) as cluster,
         distributed.Client(cluster) as client,
@@ -296,3 +297,21 @@ def test_from_npy_reads_chunks_on_the_workers_and_to_npy_writes_them(
         gsd.from_npy(tmp_path / "a.npy", -1)
     with pytest.raises(TypeError, match="dask array"):
         gsd.to_npy(stored, tmp_path / "c.npy")
+
+
+def test_the_cluster_bench_runs_and_finds_the_outputs_bit_identical(
+    gsd: Any, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    require("distributed")
+    from glshade import __main__ as cli
+
+    path = tmp_path / "cluster.json"
+    args = ["bench", "cluster", "--vertices", "300000", "--chunk", "70000", "--repeat", "1"]
+    assert cli.main([*args, "--json", str(path), "--dir", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    assert "bit-identical to the local call's: True" in out and "Mvert/s" in out
+    saved = json.loads(path.read_text())
+    assert saved["bench"] == "cluster" and saved["results"]["bit_identical"] is True
+    assert saved["settings"] == {"vertices": 300_000, "chunk": 70_000, "workers": 2, "repeat": 1}
+    assert "cpu" in saved["machine"]
+    assert list(tmp_path.iterdir()) == [path]  # the scratch files are gone

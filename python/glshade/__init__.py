@@ -16,6 +16,7 @@ from ._render import Image, render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 from ._shade_mesh import shade_mesh
+from ._tools.report import Report, report  # last: the tools use the names above
 
 __all__ = [
     "Camera",
@@ -23,6 +24,7 @@ __all__ = [
     "Light",
     "Lights",
     "Material",
+    "Report",
     "Scene",
     "__version__",
     "disc_light",
@@ -30,6 +32,7 @@ __all__ = [
     "presets",
     "rectangle_light",
     "render",
+    "report",
     "shade",
     "shade_mesh",
     "vertex_normals",

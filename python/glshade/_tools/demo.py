@@ -4,19 +4,15 @@ sphere, then a mesh rendered with flat, Gouraud and Phong shading."""
 from __future__ import annotations
 
 import functools
-import statistics
-import time
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 from numpy.typing import NDArray
 
 import glshade as gs
 
-from ._meshes import torus
-from ._png import write_png
+from .meshes import torus
+from .timing import time_rounds
 
 
 def sphere_pixels(size: int) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.bool_]]:
@@ -60,15 +56,6 @@ def demo_scene() -> gs.Scene:
     )
 
 
-def median_seconds(call: Callable[[], Any], repeat: int) -> float:
-    times = []
-    for _ in range(repeat):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
-
-
 def demo_camera() -> gs.Camera:
     """The view of `demo_mesh` in the demo and the render benchmark."""
     return gs.Camera.look_at(
@@ -87,22 +74,23 @@ def shade_vertices(scene: gs.Scene, size: int, repeat: int) -> NDArray[np.float6
     positions, normals, inside = sphere_pixels(size)
     n = len(positions)
     print(f"1. gs.shade: {n:,} points of a unit sphere, one per pixel of a {size}x{size} image\n")
-    results = {}
     print(f"{'dtype':8} {'median time':>12} {'Mvertices/s':>12}")
-    for dtype in (np.float32, np.float64):
-        p, nrm = positions.astype(dtype), normals.astype(dtype)
-        out = np.zeros((n, 4), dtype)
-        gs.shade(p, nrm, scene, out=out)  # warm-up: first-touch of the pages and thread start
-        seconds = median_seconds(functools.partial(gs.shade, p, nrm, scene, out=out), repeat)
-        results[dtype] = out.copy()
-        print(f"{np.dtype(dtype).name:8} {seconds * 1e3:10.2f} ms {n / seconds / 1e6:12.1f}")
-    diff = np.abs(results[np.float32].astype(np.float64) - results[np.float64])
+    inputs = {d: (positions.astype(d), normals.astype(d)) for d in (np.float32, np.float64)}
+    outs = {d: np.zeros((n, 4), d) for d in inputs}
+    calls = {
+        np.dtype(d).name: functools.partial(gs.shade, p, nrm, scene, out=outs[d])
+        for d, (p, nrm) in inputs.items()
+    }
+    for name, timing in time_rounds(calls, repeat).items():
+        seconds = timing.median
+        print(f"{name:8} {seconds * 1e3:10.2f} ms {n / seconds / 1e6:12.1f}")
+    diff = np.abs(outs[np.float32].astype(np.float64) - outs[np.float64])
     print(f"\nmax |float32 - float64| over all {n * 4:,} channels: {diff.max():.2e}")
-    mean = results[np.float64].mean(axis=0)
+    mean = outs[np.float64].mean(axis=0)
     print(f"mean RGBA: ({', '.join(f'{c:.4f}' for c in mean)})")
     image = np.zeros((size, size, 4))
     image[..., 3] = 1.0
-    image[inside] = results[np.float64]
+    image[inside] = outs[np.float64]
     return image
 
 
@@ -112,9 +100,8 @@ def render_modes(scene: gs.Scene, size: int, repeat: int) -> dict[str, gs.Image]
     v32, camera = v.astype(np.float32), demo_camera()
     print(f"\n2. gs.render: a torus of {len(f):,} triangles, {size}x{size}, float32\n")
     print(f"{'shading':8} {'median time':>12} {'evaluations':>12}")
-    images = {}
-    for shading in ("flat", "gouraud", "phong"):
-        call = functools.partial(
+    calls = {
+        shading: functools.partial(
             gs.render,
             v32,
             f,
@@ -125,8 +112,13 @@ def render_modes(scene: gs.Scene, size: int, repeat: int) -> dict[str, gs.Image]
             shading=shading,
             background=(1, 1, 1, 1),
         )
+        for shading in ("flat", "gouraud", "phong")
+    }
+    timings = time_rounds(calls, repeat)
+    images = {}
+    for shading, call in calls.items():
         images[shading], depth = call(depth=True)
-        seconds = median_seconds(call, repeat)
+        seconds = timings[shading].median
         evaluations = {"flat": len(f), "gouraud": len(v), "phong": int((depth < 1).sum())}[shading]
         print(f"{shading:8} {seconds * 1e3:10.2f} ms {evaluations:12,}")
     return images
@@ -143,7 +135,7 @@ def demo(size: int, repeat: int, output: str) -> int:
     print(f"\nGouraud against Phong: max |difference| {difference.max():.3f}", end="")
     print(f", mean {difference.mean():.4f}")
     path = Path(output)
-    written = [write_png(path, sphere)]
+    written = [sphere.view(gs.Image).save(path)]
     for shading, image in images.items():
         written.append(image.save(path.with_name(f"{path.stem}-{shading}{path.suffix}")))
     for p in written:

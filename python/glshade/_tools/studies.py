@@ -1,4 +1,4 @@
-"""Numerical studies behind the README's numbers; ``python -m glshade report`` prints them.
+"""Numerical studies behind the README's numbers; `gs.report` runs two of them.
 
 Each study is one self-contained function returning rows of plain numbers.
 """
@@ -6,28 +6,23 @@ Each study is one self-contained function returning rows of plain numbers.
 from __future__ import annotations
 
 import functools
-import statistics
-import time
 from collections.abc import Iterable, Sequence
 from typing import Any
 
 import numpy as np
 
-from ._area_lights import disc_light, rectangle_light
-from ._camera import Camera
-from ._demo import median_seconds
-from ._meshes import icosphere
-from ._render import render
-from ._scene import Light, Lights, Material, Scene
-from ._shade import shade
+import glshade as gs
+
+from .meshes import icosphere
+from .timing import time_rounds
 
 __all__ = ["area_light_closed_form", "area_light_convergence", "gouraud_vs_phong"]
 
 
-def _area_light_scene(k: int) -> Scene:
+def _area_light_scene(k: int) -> gs.Scene:
     """A 1 x 0.5 Lambertian panel 0.6 above a floor, facing it, with 1/d^2 attenuation; a glossy
     floor material and a local viewer, so the highlight makes the integrand sharp."""
-    panel = rectangle_light(
+    panel = gs.rectangle_light(
         center=(0.0, 0.6, 0.0),
         u=(1.0, 0.0, 0.0),
         v=(0.0, 0.0, 0.5),  # u x v points down, at the floor
@@ -38,10 +33,10 @@ def _area_light_scene(k: int) -> Scene:
         quadratic_attenuation=1.0,
         emission="lambertian",
     )
-    floor = Material(
+    floor = gs.Material(
         ambient=(0.0, 0.0, 0.0), diffuse=(0.8, 0.7, 0.6), specular=(0.5, 0.5, 0.5), shininess=24
     )
-    return Scene(lights=panel, material=floor, global_ambient=(0, 0, 0), viewer=(0, 2, 3, 1))
+    return gs.Scene(lights=panel, material=floor, global_ambient=(0, 0, 0), viewer=(0, 2, 3, 1))
 
 
 def area_light_convergence(
@@ -66,13 +61,14 @@ def area_light_convergence(
     grid : int
         Vertices per side of the floor.
     repeat : int
-        Timed calls of `shade` per k; the median is reported.
+        Timed rounds (`timing.time_rounds`, all k in each round); the median is reported.
 
     Returns
     -------
     list of dict
         One row per k: ``k``, ``max_error`` and ``mean_error`` (over the RGB channels of every
-        vertex, against the reference), ``ms`` (the median time of one `shade` call).
+        vertex, against the reference), ``ms`` (the median time of one `shade` call) and
+        ``ms_low``, ``ms_high`` (the fastest and slowest round).
     """
     if grid < 1 or repeat < 1 or reference_k < 1:
         raise ValueError(
@@ -82,34 +78,35 @@ def area_light_convergence(
     x, z = np.meshgrid(side, side)
     positions = np.stack([x.ravel(), np.zeros(x.size), z.ravel()], axis=1)
     normals = np.tile([0.0, 1.0, 0.0], (len(positions), 1))
-    reference = shade(positions, normals, _area_light_scene(reference_k))[:, :3]
+    reference = gs.shade(positions, normals, _area_light_scene(reference_k))[:, :3]
+    outs = {k: np.zeros((len(positions), 4)) for k in ks}
+    calls = {
+        str(k): functools.partial(gs.shade, positions, normals, _area_light_scene(k), out=outs[k])
+        for k in ks
+    }
+    timings = time_rounds(calls, repeat)  # the warm-up call fills `outs`
     rows: list[dict[str, float]] = []
     for k in ks:
-        scene = _area_light_scene(k)
-        out = np.zeros((len(positions), 4))
-        shade(positions, normals, scene, out=out)  # warm-up
-        times = []
-        for _ in range(repeat):
-            start = time.perf_counter()
-            shade(positions, normals, scene, out=out)
-            times.append(time.perf_counter() - start)
-        error = np.abs(out[:, :3] - reference)
+        error = np.abs(outs[k][:, :3] - reference)
+        t = timings[str(k)]
         rows.append(
             {
                 "k": k,
                 "max_error": float(error.max()),
                 "mean_error": float(error.mean()),
-                "ms": statistics.median(times) * 1e3,
+                "ms": t.median * 1e3,
+                "ms_low": t.low * 1e3,
+                "ms_high": t.high * 1e3,
             }
         )
     return rows
 
 
-def _on_axis(lights: Lights, h: float) -> float:
+def _on_axis(lights: gs.Lights, h: float) -> float:
     """The diffuse of a white, unit-normal vertex h below `lights` (at y = 0), facing them."""
-    white = Material(ambient=(0, 0, 0), diffuse=(1, 1, 1), specular=(0, 0, 0))
-    scene = Scene(lights=lights, material=white, global_ambient=(0, 0, 0))
-    return float(shade([[0.0, -h, 0.0]], [[0.0, 1.0, 0.0]], scene)[0, 0])
+    white = gs.Material(ambient=(0, 0, 0), diffuse=(1, 1, 1), specular=(0, 0, 0))
+    scene = gs.Scene(lights=lights, material=white, global_ambient=(0, 0, 0))
+    return float(gs.shade([[0.0, -h, 0.0]], [[0.0, 1.0, 0.0]], scene)[0, 0])
 
 
 def area_light_closed_form(
@@ -138,8 +135,8 @@ def area_light_closed_form(
     exact_disc = c * 2.0 * (1.0 - h / np.hypot(radius, h)) / radius**2
     rows: list[dict[str, float]] = []
     for k in ks:
-        rectangle = rectangle_light((0, 0, 0), (2 * a, 0, 0), (0, 0, 2 * b), k, **light)
-        disc = disc_light((0, 0, 0), (0, -1, 0), radius, k, **light)
+        rectangle = gs.rectangle_light((0, 0, 0), (2 * a, 0, 0), (0, 0, 2 * b), k, **light)
+        disc = gs.disc_light((0, 0, 0), (0, -1, 0), radius, k, **light)
         rows.append(
             {
                 "k": k,
@@ -162,9 +159,10 @@ def gouraud_vs_phong(
 
     The sphere (exact normals: the unit positions) is lit by a white directional light with a
     highlight of shininess 64 (material diffuse 0.7, specular 1) and rendered at `size` x `size`
-    in float32 with both shadings, each timed as the median of `repeat` renders. Gouraud's error
-    follows s * delta^2 / 8 for a highlight across an edge whose normals differ by delta
-    (cos^s has curvature s at its peak): it falls fourfold with each subdivision, halving delta.
+    in float32 with both shadings, each timed as the median of `repeat` rounds (every render
+    once per round, `timing.time_rounds`). Gouraud's error follows s * delta^2 / 8 for a
+    highlight across an edge whose normals differ by delta (cos^s has curvature s at its peak):
+    it falls fourfold with each subdivision, halving delta.
 
     Parameters
     ----------
@@ -173,7 +171,7 @@ def gouraud_vs_phong(
     size : int
         Image width and height in pixels.
     repeat : int
-        Renders per timing.
+        Timed rounds.
 
     Returns
     -------
@@ -183,23 +181,23 @@ def gouraud_vs_phong(
         RGB channels of the pixels both draw; ``levels8_wrong``, the fraction of those channels
         whose 8-bit value differs; ``gouraud_ms`` and ``phong_ms``, the median render times.
     """
-    scene = Scene(
-        lights=[Light(position=(1.0, 1.5, 2.0, 0.0))],
-        material=Material(diffuse=(0.7, 0.7, 0.7), specular=(1, 1, 1), shininess=64),
+    scene = gs.Scene(
+        lights=[gs.Light(position=(1.0, 1.5, 2.0, 0.0))],
+        material=gs.Material(diffuse=(0.7, 0.7, 0.7), specular=(1, 1, 1), shininess=64),
         global_ambient=(0.1, 0.1, 0.1),
     )
-    camera = Camera.look_at((0.0, 0.0, 3.2), fovy=45, near=1, far=10)
-    rows = []
-    for level in subdivisions:
+    camera = gs.Camera.look_at((0.0, 0.0, 3.2), fovy=45, near=1, far=10)
+    levels = list(subdivisions)
+    calls, facts = {}, {}
+    for level in levels:
         v, f = icosphere(level)
         edges = np.concatenate([f[:, [0, 1]], f[:, [1, 2]], f[:, [2, 0]]])
         cosines = np.einsum("ij,ij->i", v[edges[:, 0]], v[edges[:, 1]])
+        facts[level] = (len(f), float(np.degrees(np.arccos(np.clip(cosines.min(), -1, 1)))))
         v32 = v.astype(np.float32)
-        images = {}
-        times = {}
         for shading in ("gouraud", "phong"):
-            draw = functools.partial(
-                render,
+            calls[f"{level} {shading}"] = functools.partial(
+                gs.render,
                 v32,
                 f,
                 scene,
@@ -210,21 +208,25 @@ def gouraud_vs_phong(
                 normals=v32,
                 depth=True,
             )
-            images[shading] = draw()
-            times[shading] = median_seconds(draw, repeat) * 1e3
-        (gouraud, gouraud_depth), (phong, phong_depth) = images["gouraud"], images["phong"]
+    times = time_rounds(calls, repeat)
+    rows = []
+    for level in levels:
+        (gouraud, gouraud_depth), (phong, phong_depth) = (
+            calls[f"{level} {shading}"]() for shading in ("gouraud", "phong")
+        )
         both = (gouraud_depth < 1) & (phong_depth < 1)
         g, p = np.asarray(gouraud)[both][:, :3], np.asarray(phong)[both][:, :3]
         error = np.abs(g.astype(np.float64) - p)
+        triangles, edge_degrees = facts[level]
         rows.append(
             {
-                "triangles": len(f),
-                "edge_degrees": float(np.degrees(np.arccos(np.clip(cosines.min(), -1, 1)))),
+                "triangles": triangles,
+                "edge_degrees": edge_degrees,
                 "max_error": float(error.max()),
                 "mean_error": float(error.mean()),
                 "levels8_wrong": float((_levels8(g) != _levels8(p)).mean()),
-                "gouraud_ms": times["gouraud"],
-                "phong_ms": times["phong"],
+                "gouraud_ms": times[f"{level} gouraud"].median * 1e3,
+                "phong_ms": times[f"{level} phong"].median * 1e3,
             }
         )
     return rows

@@ -10,18 +10,19 @@ the machine; the outputs are compared bit for bit.
 
 from __future__ import annotations
 
-import os
-import platform
-import statistics
 import tempfile
 import time
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 import glshade as gs
 
-from ._bench_shade import bench_scenes
+from .bench import save
+from .machine import describe, machine
+from .scenes import bench_scenes
+from .timing import time_rounds
 
 
 def write_inputs(folder: Path, vertices: int, seed: int = 0) -> tuple[Path, Path]:
@@ -43,21 +44,17 @@ def write_inputs(folder: Path, vertices: int, seed: int = 0) -> tuple[Path, Path
     return paths
 
 
-def cpu_model() -> str:
-    """The CPU's model name from /proc/cpuinfo, else what platform says."""
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
-
-
 def bench_cluster(
-    vertices: int, chunk: int, workers: int, repeat: int, folder: str | None = None
+    vertices: int,
+    chunk: int,
+    workers: int,
+    repeat: int,
+    json_path: str | None = None,
+    folder: str | None = None,
 ) -> int:
-    """Runs the benchmark and prints its table; returns the process exit status."""
+    """Prints (and saves at `json_path`) the median time and Mvert/s of one local `gs.shade`
+    call and of `glshade.dask` on a LocalCluster of `workers` processes, memmap to memmap, with
+    the scratch files in `folder` (default: the system's temporary directory)."""
     try:
         import distributed
 
@@ -80,34 +77,26 @@ def bench_cluster(
             gs.shade(p, n, scene, out=rgba)
             rgba.flush()
 
-        # One thread per worker process, and one for its glshade calls: the cluster uses as
-        # many cores as it has workers.
-        env = {"RAYON_NUM_THREADS": "1"}
+        # One thread per worker and one for its glshade calls: the cluster uses as many cores
+        # as it has workers, and the local call all of them.
         with (
             distributed.LocalCluster(
                 n_workers=workers,
                 threads_per_worker=1,
                 processes=True,
-                dashboard_address=None,
+                dashboard_address=":0",
                 silence_logs=40,
-                env=env,
+                env={"RAYON_NUM_THREADS": "1"},
             ) as cluster,
             distributed.Client(cluster),
         ):
 
             def on_cluster() -> None:
-                lazy = gsd.shade(
-                    gsd.from_npy(positions, chunk), gsd.from_npy(normals, chunk), scene
-                )
-                gsd.to_npy(lazy, cluster_out)
+                p, n = gsd.from_npy(positions, chunk), gsd.from_npy(normals, chunk)
+                gsd.to_npy(gsd.shade(p, n, scene), cluster_out)
 
-            times: dict[str, list[float]] = {"local": [], "cluster": []}
-            for round_ in range(repeat + 1):  # the first round warms both up
-                for name, run in (("local", local), ("cluster", on_cluster)):
-                    start = time.perf_counter()
-                    run()
-                    if round_:
-                        times[name].append(time.perf_counter() - start)
+            methods = {"one gs.shade call": local, f"glshade.dask, {workers} workers": on_cluster}
+            times = time_rounds(methods, repeat)
         same = all(
             np.array_equal(a, b)
             for a, b in zip(
@@ -116,22 +105,21 @@ def bench_cluster(
                 strict=True,
             )
         )
-    threads = os.cpu_count()
-    print(f"\nCPU: {cpu_model()}, {threads} logical cores; glshade {gs.__version__}")
-    print(f"scene: 8 mixed lights; {vertices:,} float32 vertices, memmap in, memmap out")
-    print(f"cluster: LocalCluster, {workers} worker processes x 1 thread, chunks of {chunk:,}\n")
-    print(f"  {'':36} {'median':>9} {'range':>17} {'Mvert/s':>9}")
-    for name, label in (
-        ("local", "one gs.shade call (all cores)"),
-        ("cluster", f"glshade.dask on {workers} workers"),
-    ):
-        seconds = times[name]
-        median = statistics.median(seconds)
+    print(f"\n{describe(machine())}")
+    print(f"8 mixed lights; {vertices:,} float32 vertices from .npy memmaps into a .npy memmap")
+    print(f"LocalCluster: {workers} worker processes x 1 thread, chunks of {chunk:,} rows\n")
+    print(f"  {'':30} {'median':>9} {'fastest-slowest':>17} {'Mvert/s':>9}")
+    results: dict[str, Any] = {}
+    for name, timing in times.items():
+        speed = vertices / timing.median / 1e6
         print(
-            f"  {label:36} {median:8.2f}s {min(seconds):7.2f}-{max(seconds):.2f} s"
-            f" {vertices / median / 1e6:9.1f}"
+            f"  {name:30} {timing.median:8.2f}s {timing.low:7.2f}-{timing.high:.2f} s {speed:9.1f}"
         )
+        results[name] = {**timing.as_dict(), "mvert_s": speed}
     print(f"\ncluster output bit-identical to the local call's: {same}")
+    results["bit_identical"] = same
+    settings = {"vertices": vertices, "chunk": chunk, "workers": workers, "repeat": repeat}
+    save(json_path, "cluster", settings, results)
     return 0 if same else 1
 
 

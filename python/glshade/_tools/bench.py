@@ -1,17 +1,16 @@
 """Benchmarks run beside their baselines in the same process: ``python -m glshade bench ...``.
 
-Timings are medians of repeated runs, quoted with the ratio to the baseline measured in the same
-round; the machine's other load affects both sides alike.
+Timings are medians of rounds (`timing.time_rounds`), quoted with the ratio to the baseline
+measured in the same round; the machine's other load affects both sides alike. Each bench saves
+its results as JSON with the machine description (`save`).
 """
 
 from __future__ import annotations
 
 import functools
 import importlib
-import os
-import statistics
+import json
 import sys
-import time
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -20,6 +19,9 @@ import numpy as np
 from numpy.typing import NDArray
 
 import glshade as gs
+
+from .machine import describe, machine
+from .timing import Timing, ratio, time_rounds
 
 
 def grid_mesh(faces: int, seed: int = 0) -> tuple[NDArray[np.float64], NDArray[np.int64]]:
@@ -50,39 +52,23 @@ def numpy_area_normals(v: NDArray[np.float64], f: NDArray[np.int64]) -> NDArray[
     return unit
 
 
-def in_rounds(
-    methods: dict[str, Callable[[], Any]], repeat: int, settle: float, burst: int = 1
-) -> dict[str, list[float]]:
-    """Seconds per call of each method, timed in rounds: every round runs every method once, so
-    all methods see the same load on a shared machine (ratios are taken within a round). The
-    order rotates from round to round and runs backwards every other round, so every method
-    takes every place and follows two different methods.
-
-    Each call starts `settle` seconds after the previous one ended: numpy's OpenBLAS keeps its
-    threads spinning for about 0.1 s after a call, and on a 2-core machine they would take a
-    core from whichever method runs next.
-
-    With `burst` > 1 a method runs that many times in a row in its turn and the fastest call
-    counts: its steady rate, without what the first call pays to wake a core that idled while
-    a single-threaded method ran (see `bench_shade`)."""
-    for call in methods.values():
-        call()  # warm-up
-    names = list(methods)
-    times: dict[str, list[float]] = {name: [] for name in names}
-    for r in range(repeat):
-        order = names[r % len(names) :] + names[: r % len(names)]
-        for name in order[::-1] if r % 2 else order:
-            time.sleep(settle)
-            fastest = float("inf")
-            for _ in range(burst):
-                start = time.perf_counter()
-                methods[name]()
-                fastest = min(fastest, time.perf_counter() - start)
-            times[name].append(fastest)
-    return times
+def save(path: str | Path | None, bench: str, settings: dict[str, Any], results: Any) -> None:
+    """Writes a bench's results as JSON at `path` (None: nowhere) with the machine description:
+    ``{"bench", "machine", "settings", "results"}``, and says where."""
+    if path is None:
+        return
+    data = {"bench": bench, "machine": machine(), "settings": settings, "results": results}
+    target = Path(path)
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(json.dumps(data, indent=2) + "\n")
+    print(f"\nwrote {target}")
 
 
-def bench_normals(faces: int, repeat: int, settle: float = 0.25) -> int:
+def bench_normals(
+    faces: int, repeat: int, settle: float = 0.25, json_path: str | None = None
+) -> int:
+    """Prints (and saves at `json_path`) the median time of glshade's normals, a numpy
+    scatter-add and trimesh's on a mesh of about `faces` faces, with the per-round speed-ups."""
     v, f = grid_mesh(faces)
     v32 = v.astype(np.float32)
     methods: dict[str, Callable[[], Any]] = {
@@ -103,21 +89,23 @@ def bench_normals(faces: int, repeat: int, settle: float = 0.25) -> int:
             trimesh.Trimesh(v, f, process=False).vertex_normals
         )
         methods["trimesh face_normals"] = lambda: trimesh.Trimesh(v, f, process=False).face_normals
-    threads = os.environ.get("RAYON_NUM_THREADS") or f"{os.cpu_count()} (all cores)"
+    print(describe(machine()))
     print(f"{len(f):,} faces, {len(v):,} vertices (a jittered height field, float64, int64)")
     print(f"{repeat} rounds, each method once per round in rotating order, {settle} s apart")
-    print(f"glshade threads: {threads}")
     if trimesh is not None:
         print(
             f"trimesh {trimesh.__version__}: trimesh.Trimesh(v, f, process=False).vertex_normals "
             "(and .face_normals) on a fresh mesh per call, so nothing is cached"
         )
-    times = in_rounds(methods, repeat, settle)
+    times = time_rounds(methods, repeat, settle=settle)
     print(f"\n  {'method':42} {'median':>10}")
-    for name, seconds in times.items():
-        print(f"  {name:42} {statistics.median(seconds) * 1e3:7.1f} ms")
+    for name, t in times.items():
+        print(f"  {name:42} {t.median * 1e3:7.1f} ms")
+    settings = {"faces": len(f), "vertices": len(v), "rounds": repeat, "settle_s": settle}
+    results: dict[str, Any] = {"ms": {k: t.as_dict(1e3) for k, t in times.items()}}
     if trimesh is None:
         print("\ntrimesh is not installed (pip install trimesh scipy): no trimesh baseline")
+        save(json_path, "normals", settings, results)
         return 0
     reference = trimesh.Trimesh(v, f, process=False).vertex_normals
     difference = np.abs(gs.vertex_normals(v, f) - reference).max()
@@ -136,12 +124,13 @@ def bench_normals(faces: int, repeat: int, settle: float = 0.25) -> int:
         ),
         ("face normals, float64", "trimesh face_normals", "glshade face_normals, float64"),
     ]
+    speedups: dict[str, Timing] = {}
     for label, baseline, ours in pairs:
-        ratios = [b / o for b, o in zip(times[baseline], times[ours], strict=True)]
-        print(
-            f"  {label:42} {statistics.median(ratios):6.1f}x"
-            f"   ({min(ratios):.1f}x to {max(ratios):.1f}x)"
-        )
+        speedups[label] = r = ratio(times[baseline], times[ours])
+        print(f"  {label:42} {r.median:6.1f}x   ({r.low:.1f}x to {r.high:.1f}x)")
+    results["max_difference_from_trimesh"] = float(difference)
+    results["speedup_over_trimesh"] = {k: r.as_dict() for k, r in speedups.items()}
+    save(json_path, "normals", settings, results)
     return 0
 
 
@@ -229,9 +218,11 @@ class LlvmpipeRenderer:
         return image.reshape(self.size, self.size, 4)[::-1]
 
 
-def bench_render(faces: int, size: int, repeat: int) -> int:
-    from ._demo import demo_camera, demo_scene
-    from ._meshes import torus
+def bench_render(faces: int, size: int, repeat: int, json_path: str | None = None) -> int:
+    """Prints (and saves at `json_path`) the median time of `gs.render` and of moderngl on
+    Mesa's llvmpipe for each shading, with the per-round speed-ups and the pixels that agree."""
+    from .demo import demo_camera, demo_scene
+    from .meshes import torus
 
     sides = max(3, round(np.sqrt(faces / 2 / 1.25)))  # 10^5 faces: 250 x 200 exactly
     rings = max(3, faces // (2 * sides))
@@ -239,6 +230,7 @@ def bench_render(faces: int, size: int, repeat: int) -> int:
     v, f = mesh
     v32, normals = v.astype(np.float32), gs.vertex_normals(v, f).astype(np.float32)
     scene, camera = demo_scene(), demo_camera()
+    print(describe(machine()))
     print(
         f"a torus of {len(f):,} triangles ({len(v):,} vertices), {size}x{size}, float32; "
         f"{len(scene.lights)} lights; {repeat} rounds, each method once per round"
@@ -263,18 +255,24 @@ def bench_render(faces: int, size: int, repeat: int) -> int:
                 glpeers, mesh, shading, scene, camera, size
             )
     results = {name: np.asarray(call()) for name, call in methods.items()}
-    times = in_rounds(methods, repeat, settle=0.0)
+    times = time_rounds(methods, repeat)
     print(f"\n  {'method':24} {'median':>10}")
-    for name, seconds in times.items():
-        print(f"  {name:24} {statistics.median(seconds) * 1e3:7.1f} ms")
+    for name, t in times.items():
+        print(f"  {name:24} {t.median * 1e3:7.1f} ms")
+    settings = {"faces": len(f), "vertices": len(v), "size": size, "rounds": repeat}
+    saved: dict[str, Any] = {"ms": {k: t.as_dict(1e3) for k, t in times.items()}}
     if glpeers is None:
+        save(json_path, "render", settings, saved)
         return 0
     print("\n  shading   pixels within 1e-4 of llvmpipe   speed-up (median of per-round ratios)")
+    saved["agreeing_pixels"], saved["speedup_over_llvmpipe"] = {}, {}
     for shading in ("flat", "gouraud", "phong"):
         ours, theirs = results[f"glshade {shading}"], results[f"llvmpipe {shading}"]
         both = (ours[..., 3] > 0) & (theirs[..., 3] > 0)
         agreeing = (np.abs(ours[both] - theirs[both]).max(axis=-1) <= 1e-4).mean()
-        baseline, own = times[f"llvmpipe {shading}"], times[f"glshade {shading}"]
-        ratio = statistics.median(b / o for b, o in zip(baseline, own, strict=True))
-        print(f"  {shading:8} {agreeing:28.3%}   {ratio:10.2f}x")
+        r = ratio(times[f"llvmpipe {shading}"], times[f"glshade {shading}"])
+        print(f"  {shading:8} {agreeing:28.3%}   {r.median:10.2f}x")
+        saved["agreeing_pixels"][shading] = float(agreeing)
+        saved["speedup_over_llvmpipe"][shading] = r.as_dict()
+    save(json_path, "render", settings, saved)
     return 0

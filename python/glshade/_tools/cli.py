@@ -1,0 +1,142 @@
+"""Command line: ``python -m glshade demo|report|bench shade|normals|render|cluster``."""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Sequence
+from pathlib import Path
+
+__all__ = ["main"]
+
+
+def _positive(text: str) -> int:
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {value}")
+    return value
+
+
+def _at_least_two(text: str) -> int:
+    value = int(text)
+    if value < 2:
+        raise argparse.ArgumentTypeError(f"must be at least 2, got {value}")
+    return value
+
+
+def _not_negative(text: str) -> float:
+    value = float(text)
+    if not value >= 0:
+        raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
+    return value
+
+
+def _parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="python -m glshade", description=__doc__)
+    commands = parser.add_subparsers(dest="command", required=True)
+    run = commands.add_parser(
+        "demo", help="shade and render a built-in scene, print timings, write PNGs"
+    )
+    run.add_argument("--size", type=_positive, default=1024, help="image size (default 1024)")
+    run.add_argument("--repeat", type=_positive, default=7, help="timed rounds (default 7)")
+    run.add_argument(
+        "--output",
+        default="glshade-demo.png",
+        help="PNG path of the shaded sphere (default ./glshade-demo.png); the renders go beside "
+        "it with -flat, -gouraud and -phong added to the name",
+    )
+    rep = commands.add_parser(
+        "report",
+        help="error against run time of every scene class, dtype, accuracy mode and "
+        "instruction set, with studies; writes report.md, .json, .csv and figures",
+    )
+    rep.add_argument("--out", default="glshade-report", help="directory (default ./glshade-report)")
+    rep.add_argument(
+        "--vertices", type=_positive, default=100_000, help="per scene class (default 10^5)"
+    )
+    rep.add_argument("--rounds", type=_positive, default=9, help="timed rounds (default 9)")
+    rep.add_argument(
+        "--isa",
+        nargs="+",
+        choices=["avx512", "avx2", "baseline"],
+        help="instruction sets (default: every one this CPU runs)",
+    )
+    rep.add_argument("--no-studies", action="store_true", help="leave out the two studies")
+    rep.add_argument("--quiet", action="store_true", help="no progress bar")
+    bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
+    which = bench.add_subparsers(dest="what", required=True)
+    shade = which.add_parser("shade", help="gs.shade beside numpy and numba")
+    shade.add_argument(
+        "--sizes",
+        type=_positive,
+        nargs="+",
+        default=[10_000, 100_000, 1_000_000, 4_000_000],
+        help="vertex counts (default 10^4 10^5 10^6 4*10^6)",
+    )
+    normals = which.add_parser("normals", help="vertex and face normals beside trimesh")
+    normals.add_argument("--faces", type=_at_least_two, default=1_000_000, help="default 10^6")
+    normals.add_argument(
+        "--settle",
+        type=_not_negative,
+        default=0.25,
+        help="seconds of idle before each timed call (default 0.25)",
+    )
+    render = which.add_parser("render", help="gs.render beside moderngl on Mesa's llvmpipe")
+    render.add_argument("--faces", type=_at_least_two, default=100_000, help="default 10^5")
+    render.add_argument("--size", type=_positive, default=1024, help="image size (default 1024)")
+    cluster = which.add_parser(
+        "cluster", help="glshade.dask on a LocalCluster beside one gs.shade call, memmap to memmap"
+    )
+    cluster.add_argument(
+        "--vertices", type=_positive, default=100_000_000, help="float32 vertices (default 10^8)"
+    )
+    cluster.add_argument(
+        "--chunk", type=_positive, default=500_000, help="rows per task (default 5*10^5)"
+    )
+    cluster.add_argument("--workers", type=_positive, default=2, help="processes (default 2)")
+    cluster.add_argument(
+        "--dir", help="where the scratch .npy files go (default: the temporary directory)"
+    )
+    benches = ((shade, "shade"), (normals, "normals"), (render, "render"), (cluster, "cluster"))
+    for sub, name in benches:
+        sub.add_argument("--repeat", type=_positive, default=7, help="rounds (default 7)")
+        sub.add_argument(
+            "--json",
+            default=f"glshade-bench-{name}.json",
+            help=f"where the results go, with the machine (default ./glshade-bench-{name}.json)",
+        )
+    return parser
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    """Parses `argv` (default: the command line) and runs the command; its exit status."""
+    args = _parser().parse_args(argv)
+    if args.command == "report":
+        import glshade as gs
+
+        result = gs.report(
+            vertices=args.vertices,
+            rounds=args.rounds,
+            isas=args.isa,
+            studies=not args.no_studies,
+            progress=not args.quiet,
+        )
+        for path in result.write(Path(args.out)):
+            print(f"wrote {path}")
+        return 0
+    if args.command == "bench":
+        from . import bench, bench_shade
+
+        if args.what == "shade":
+            return bench_shade.bench_shade(tuple(args.sizes), args.repeat, args.json)
+        if args.what == "render":
+            return bench.bench_render(args.faces, args.size, args.repeat, args.json)
+        if args.what == "cluster":
+            from .bench_cluster import bench_cluster
+
+            return bench_cluster(
+                args.vertices, args.chunk, args.workers, args.repeat, args.json, args.dir
+            )
+        return bench.bench_normals(args.faces, args.repeat, args.settle, args.json)
+    from .demo import demo
+
+    return demo(args.size, args.repeat, args.output)

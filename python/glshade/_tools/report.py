@@ -1,0 +1,333 @@
+"""`gs.report`: error against run time of every scene class, dtype, accuracy mode and
+instruction set, with the area-light and Gouraud-Phong studies.
+
+Each scene class (`scenes.report_classes`: the benchmark's typical scenes and every class of the
+stiff suite) is shaded in float32 and float64, ``accuracy="fast"`` and ``"exact"``, with every
+instruction set the CPU has (one child process per set: glshade picks its set once per
+process, capped by ``GLSHADE_ISA``). Errors are against the reference: the same inputs
+evaluated in long double (x87 extended on x86-64, a 64-bit significand) by
+`baselines.equation` with the stable power ``exp(s·log1p(-|n^ - h^|²/2))``, clamped. The
+references are computed first, then each instruction set's calls are timed in rotating rounds
+(`timing.time_rounds`), as the benchmarks time theirs.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import pickle
+import subprocess
+import sys
+import tempfile
+from collections.abc import Sequence
+from dataclasses import asdict, dataclass, fields
+from pathlib import Path
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+from .baselines import equation, stable_power
+from .bounds import BOUNDS, EDGE
+from .machine import machine
+from .progress import Progress
+from .scenes import report_classes
+from .studies import area_light_convergence, gouraud_vs_phong
+
+__all__ = ["ISAS", "MODES", "Report", "Row", "report"]
+
+MODES: tuple[tuple[str, Literal["fast", "exact"]], ...] = (
+    ("float32", "fast"),
+    ("float32", "exact"),
+    ("float64", "fast"),
+    ("float64", "exact"),
+)
+ISAS = ("avx512", "avx2", "baseline")
+SCHEMA = "glshade-report/1"
+REFERENCE = (
+    "the GL equation in long double (numpy's longdouble) with the stable power "
+    "exp(s log1p(-|n^ - h^|^2 / 2)), on the inputs as rounded to the dtype, clamped"
+)
+
+
+@dataclass(frozen=True)
+class Row:
+    """One (scene class, dtype, accuracy mode, instruction set) of the report.
+
+    Errors are over the RGB channels of every vertex, against the reference: absolute
+    (``|got - reference|``) and in ulps (that over the spacing of the dtype at the reference's
+    value); a NaN where the reference has NaN counts 0, anywhere else infinity. ``bound`` is the
+    mode's bound on unit normals and colours in [0, 1] (`bounds.BOUNDS`);
+    ``max_error_over_bound`` the largest error over its channel's own bound (<= 1 when every
+    channel is within it), leaving out the ``flipped`` vertices: those within `bounds.EDGE` of a
+    discontinuity that land on its other side. Times are per vertex: the median, fastest and
+    slowest of ``rounds`` rounds, each one call on ``vertices`` vertices.
+    """
+
+    scene: str
+    kind: str
+    dtype: str
+    accuracy: str
+    isa: str
+    vertices: int
+    max_error: float
+    mean_error: float
+    p999_error: float
+    max_ulps: float
+    mean_ulps: float
+    p999_ulps: float
+    bound: float
+    max_error_over_bound: float
+    flipped: int
+    time_ns: float
+    time_low_ns: float
+    time_high_ns: float
+    rounds: int
+
+    @property
+    def mvert_s(self) -> float:
+        """Million vertices per second, from the median time."""
+        return 1e3 / self.time_ns
+
+
+@dataclass(frozen=True)
+class Report:
+    """The result of `report`: its rows, the machine they ran on and the studies.
+
+    Attributes
+    ----------
+    rows : tuple of Row
+        One per scene class, dtype, accuracy mode and instruction set.
+    machine : dict
+        `machine.machine`: CPU model and flags, CPUs, threads, instruction set, glshade, numpy
+        and Python versions, platform, date.
+    settings : dict
+        ``vertices`` and ``rounds`` as asked, ``reference`` (what the errors are against).
+    area_lights : tuple of dict
+        `studies.area_light_convergence` (empty when the studies were left out).
+    gouraud_phong : tuple of dict
+        `studies.gouraud_vs_phong` (empty when the studies were left out).
+    """
+
+    rows: tuple[Row, ...]
+    machine: dict[str, Any]
+    settings: dict[str, Any]
+    area_lights: tuple[dict[str, Any], ...] = ()
+    gouraud_phong: tuple[dict[str, Any], ...] = ()
+
+    def to_dicts(self) -> list[dict[str, Any]]:
+        """The rows as plain dicts (the fields of `Row` and ``mvert_s``), in order."""
+        return [{**asdict(r), "mvert_s": r.mvert_s} for r in self.rows]
+
+    def to_json(self, indent: int | None = 2) -> str:
+        """Everything as JSON, in the schema of ``report.schema.json`` beside this module:
+        ``schema``, ``machine``, ``settings``, ``rows`` and ``studies``; infinities as
+        ``null``."""
+
+        def finite(x: Any) -> Any:
+            if isinstance(x, float) and not np.isfinite(x):
+                return None
+            if isinstance(x, dict):
+                return {k: finite(v) for k, v in x.items()}
+            if isinstance(x, list | tuple):
+                return [finite(v) for v in x]
+            return x
+
+        data = {
+            "schema": SCHEMA,
+            "machine": self.machine,
+            "settings": self.settings,
+            "rows": self.to_dicts(),
+            "studies": {
+                "area_lights": list(self.area_lights),
+                "gouraud_phong": list(self.gouraud_phong),
+            },
+        }
+        return json.dumps(finite(data), indent=indent, allow_nan=False)
+
+    def to_csv(self) -> str:
+        """The rows as CSV with a header line (the machine is in `to_json` and the Markdown)."""
+        buffer = io.StringIO()
+        names = [f.name for f in fields(Row)] + ["mvert_s"]
+        writer = csv.DictWriter(buffer, names, lineterminator="\n")
+        writer.writeheader()
+        writer.writerows(self.to_dicts())
+        return buffer.getvalue()
+
+    def write(self, directory: str | Path) -> list[Path]:
+        """Writes report.md, report.json, report.csv and, with matplotlib, the figures (PNG and
+        SVG) into `directory` (made if missing); returns the paths written."""
+        from .report_files import write
+
+        return write(self, Path(directory))
+
+
+def _prepare(classes: Sequence[Any], vertices: int, folder: Path, progress: Progress) -> list[Path]:
+    """Inputs, reference and per-channel bounds of every class and dtype, pickled for the
+    workers; one file per class and dtype."""
+    files = []
+    for i, cls in enumerate(classes):
+        n = max(1, round(vertices * cls.share))
+        p64, n64 = cls.vertices(n, np.random.default_rng(1000 + i))
+        for dtype in ("float32", "float64"):
+            p, normals = p64.astype(dtype), n64.astype(dtype)
+            with np.errstate(over="ignore", invalid="ignore"):  # NaN rows and huge terms
+                ref = equation(
+                    p.astype(np.longdouble),
+                    normals.astype(np.longdouble),
+                    cls.scene,
+                    stable_power,
+                    account=True,
+                )
+            assert ref.magnitude is not None and ref.sensitivity is not None
+            assert ref.edge is not None
+            magnitude, sensitivity = ref.magnitude.astype(float), ref.sensitivity.astype(float)
+            case = {
+                "scene": cls.name,
+                "kind": cls.kind,
+                "dtype": dtype,
+                "model": cls.scene,
+                "positions": p,
+                "normals": normals,
+                "reference": np.clip(ref.rgb.astype(float), 0, 1),
+                "edge": ref.edge.astype(float) < EDGE[dtype],
+                "bounds": {
+                    mode: BOUNDS[(dtype, mode)].per_channel(magnitude, sensitivity)
+                    for d, mode in MODES
+                    if d == dtype
+                },
+            }
+            path = folder / f"{i:02d}-{dtype}.pickle"
+            path.write_bytes(pickle.dumps(case))
+            files.append(path)
+            progress.step(f"reference: {cls.name}, {dtype}")
+    return files
+
+
+def _supported(isas: Sequence[str]) -> list[str]:
+    """The instruction sets of `isas` this CPU runs, each asked of a child process."""
+    code = "from glshade._tools.machine import instruction_set as i; print(i())"
+    found: list[str] = []
+    for isa in isas:
+        env = {**os.environ, "GLSHADE_ISA": isa}
+        out = subprocess.run(
+            [sys.executable, "-c", code], env=env, capture_output=True, text=True, check=True
+        )
+        if out.stdout.strip() == isa:
+            found.append(isa)
+    return found
+
+
+def _run_worker(isa: str, files: list[Path], rounds: int, progress: Progress) -> list[Row]:
+    """Measures every case with `isa` in a child process, following its rounds."""
+    env = {**os.environ, "GLSHADE_ISA": isa}
+    command = [sys.executable, "-m", "glshade._tools.report_worker", str(rounds), *map(str, files)]
+    rows: list[Row] = []
+    with subprocess.Popen(command, env=env, stdout=subprocess.PIPE, text=True) as child:
+        assert child.stdout is not None
+        for line in child.stdout:
+            message = json.loads(line)
+            if "step" in message:
+                progress.step(f"{isa}: {message['step']}")
+            else:
+                rows = [Row(**r) for r in message["rows"]]
+    if child.returncode != 0:
+        raise RuntimeError(f"the {isa} measurement failed (exit status {child.returncode})")
+    return rows
+
+
+def report(
+    *,
+    vertices: int = 100_000,
+    rounds: int = 9,
+    isas: Sequence[str] | None = None,
+    scenes: Sequence[str] | None = None,
+    studies: bool = True,
+    progress: bool = True,
+) -> Report:
+    """Runs the error-against-run-time study and returns it as data.
+
+    Parameters
+    ----------
+    vertices : int
+        Vertices per scene class (>= 1; the thousand-light class takes a hundredth).
+    rounds : int
+        Timed rounds (>= 1); in each, every call runs `timing.BURST` times in a row and the
+        fastest counts, as in ``bench shade``; a row's time is the median over the rounds, with
+        the fastest and the slowest round as its spread.
+    isas : sequence of str, optional
+        Instruction sets among ``"avx512"``, ``"avx2"``, ``"baseline"``; by default every one
+        this CPU runs. A set the CPU lacks is left out.
+    scenes : sequence of str, optional
+        Names of scene classes (`Report.rows`' ``scene``); by default all of them.
+    studies : bool
+        Also the area-light and Gouraud-Phong studies.
+    progress : bool
+        Show a progress bar (tqdm's when installed, else one line on stderr).
+
+    Returns
+    -------
+    Report
+        ``rows`` (one `Row` per scene class, dtype, accuracy mode and instruction set),
+        ``machine``, ``settings``, ``area_lights`` and ``gouraud_phong``; ``to_dicts()``,
+        ``to_json()``, ``to_csv()`` and ``write(directory)``.
+
+    Examples
+    --------
+    >>> import glshade as gs
+    >>> r = gs.report(vertices=100, rounds=1, isas=["baseline"], scenes=["1 directional"],
+    ...               studies=False, progress=False)
+    >>> [(row.dtype, row.accuracy, row.max_error <= row.bound)
+    ...  for row in r.rows]  # doctest: +NORMALIZE_WHITESPACE
+    [('float32', 'fast', True), ('float32', 'exact', True),
+     ('float64', 'fast', True), ('float64', 'exact', True)]
+    """
+    for name, value in (("vertices", vertices), ("rounds", rounds)):
+        if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:
+            raise ValueError(f"{name} must be a positive integer, got {value!r}")
+    chosen = list(ISAS if isas is None else isas)
+    unknown = [i for i in chosen if i not in ISAS]
+    if unknown or not chosen:
+        raise ValueError(f"isas must name some of {', '.join(ISAS)}, got {chosen!r}")
+    classes = report_classes()
+    if scenes is not None:
+        names = [c.name for c in classes]
+        missing = [s for s in scenes if s not in names]
+        if missing or not scenes:
+            raise ValueError(f"scenes must be among {names}, got {list(scenes)!r}")
+        classes = [c for c in classes if c.name in scenes]
+    chosen = _supported(chosen)
+    if not chosen:
+        raise ValueError(f"this CPU runs none of the instruction sets {isas!r}")
+    total = 2 * len(classes) + len(chosen) * (rounds + 1) + (2 if studies else 0)
+    rows: list[Row] = []
+    with Progress(total, "glshade report", enabled=progress) as bar:
+        with tempfile.TemporaryDirectory(prefix="glshade-report-") as folder:
+            files = _prepare(classes, vertices, Path(folder), bar)
+            for isa in chosen:
+                rows += _run_worker(isa, files, rounds, bar)
+        area: list[dict[str, Any]] = []
+        gouraud: list[dict[str, Any]] = []
+        if studies:
+            area = area_light_convergence()
+            bar.step("area lights")
+            gouraud = gouraud_vs_phong()
+            bar.step("Gouraud against Phong")
+    settings = {"vertices": vertices, "rounds": rounds, "reference": REFERENCE}
+    return Report(tuple(rows), machine(), settings, tuple(area), tuple(gouraud))
+
+
+def error_statistics(
+    got: NDArray[Any], reference: NDArray[np.float64], dtype: str
+) -> tuple[NDArray[np.float64], NDArray[np.float64]]:
+    """Per channel: |got - reference| and that in ulps of `dtype` at the reference; 0 where
+    both are NaN, inf where one is."""
+    g = got.astype(np.float64)
+    with np.errstate(invalid="ignore"):
+        error = np.abs(g - reference)
+    both = np.isnan(g) & np.isnan(reference)
+    error = np.where(both, 0.0, np.where(np.isnan(error), np.inf, error))
+    spacing = np.spacing(np.abs(np.nan_to_num(reference)).astype(dtype)).astype(np.float64)
+    return error, error / spacing

@@ -1,0 +1,298 @@
+"""The scenes the benchmarks time and the report measures: the benchmark's three typical scenes,
+and one class per row of the README's table of stiff cases (tests/test_stiff.py), each with the
+vertices that make it stiff."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import numpy as np
+from numpy.typing import NDArray
+
+import glshade as gs
+
+__all__ = ["SceneClass", "bench_scenes", "bench_vertices", "report_classes"]
+
+F64 = NDArray[np.float64]
+F32 = NDArray[np.float32]
+
+
+def bench_scenes() -> dict[str, gs.Scene]:
+    """The three scenes of the benchmark: one directional light (infinite viewer), one point
+    light with a local viewer, and eight mixed lights (directional, attenuated point, spot),
+    all with a Blinn-Phong specular term of shininess 32."""
+    material = gs.Material(specular=(0.5, 0.5, 0.5, 1.0), shininess=32.0)
+    grey = (0.3, 0.3, 0.3, 1.0)
+    mixed = [
+        gs.Light(position=(0.3, 0.5, 1.0, 0.0)),
+        gs.Light(position=(-1.0, 0.5, 1.0, 0.0), diffuse=grey, specular=grey),
+        gs.Light(position=(0.0, 3.0, 0.5, 0.0), diffuse=grey, specular=grey),
+        gs.Light(position=(1.0, 2.0, 3.0, 1.0), linear_attenuation=0.1, diffuse=grey),
+        gs.Light(position=(-2.0, 1.0, 3.0, 1.0), quadratic_attenuation=0.05, diffuse=grey),
+        gs.Light(position=(2.0, -1.0, 3.0, 1.0), linear_attenuation=0.2, quadratic_attenuation=0.1),
+        gs.Light(
+            position=(0.0, 0.0, 4.0, 1.0),
+            spot_direction=(0.0, 0.0, -1.0),
+            spot_cutoff=30.0,
+            spot_exponent=8.0,
+        ),
+        gs.Light(
+            position=(1.0, 1.0, 4.0, 1.0),
+            spot_direction=(-0.2, -0.2, -1.0),
+            spot_cutoff=45.0,
+            spot_exponent=2.0,
+            linear_attenuation=0.1,
+            ambient=(0.05, 0.05, 0.05, 1.0),
+        ),
+    ]
+    return {
+        "1 directional": gs.Scene([gs.Light(position=(0.3, 0.5, 1.0, 0.0))], material=material),
+        "1 point, local viewer": gs.Scene(
+            [gs.Light(position=(1.0, 2.0, 3.0, 1.0))], material=material, viewer=(0, 0, 0, 1)
+        ),
+        "8 mixed": gs.Scene(mixed, material=material, viewer=(0, 0, 0, 1)),
+    }
+
+
+def bench_vertices(n: int, seed: int = 0) -> tuple[F32, F32]:
+    """`n` float32 positions in front of the eye and unit normals facing it, at random."""
+    rng = np.random.default_rng(seed)
+    positions = rng.uniform((-1.0, -1.0, -4.0), (1.0, 1.0, -2.0), (n, 3)).astype(np.float32)
+    normals = rng.normal(size=(n, 3)) + np.array([0.0, 0.0, 1.5])
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    return positions, normals.astype(np.float32)
+
+
+@dataclass(frozen=True)
+class SceneClass:
+    """A scene and how to make `n` of its vertices (float64 eye-space positions and normals,
+    as given to `gs.shade`); `share` scales the report's vertex count (a thousand lights
+    shade a hundredth of the vertices in about the time of ten)."""
+
+    name: str
+    kind: str  # "typical" or "stiff"
+    scene: gs.Scene
+    vertices: Callable[[int, np.random.Generator], tuple[F64, F64]]
+    share: float = 1.0
+
+
+def _typical(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    p, normals = bench_vertices(n, int(rng.integers(1 << 30)))
+    return p.astype(np.float64), normals.astype(np.float64)
+
+
+def _directions(n: int, rng: np.random.Generator, axis: float = 1.5) -> F64:
+    """Unit vectors spread around +z (a normal distribution shifted by `axis`)."""
+    v = rng.normal(size=(n, 3)) + np.array([0.0, 0.0, axis])
+    out: F64 = v / np.linalg.norm(v, axis=1, keepdims=True)
+    return out
+
+
+def _highlight(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Normals within 0.03 rad of +z, where cos^10^4 falls from 1 to 0.01."""
+    tilt, turn = rng.uniform(0, 0.03, n), rng.uniform(0, 2 * np.pi, n)
+    normals = np.c_[np.sin(tilt) * np.cos(turn), np.sin(tilt) * np.sin(turn), np.cos(tilt)]
+    return _typical(n, rng)[0], normals
+
+
+def _at_the_light(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Every tenth vertex exactly at the light (VP = 0), the others within 10^-3 .. 1 of it."""
+    light = np.array([0.5, -0.25, -3.0])
+    offset = _directions(n, rng, 0.0) * 10 ** rng.uniform(-3, 0, (n, 1))
+    offset[::10] = 0
+    return light + offset, _directions(n, rng)
+
+
+def _normals_of_any_length(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Zero normals, normals of 3 float32 subnormal ulps, and lengths from 10^-3 to 10^3."""
+    length = 10 ** rng.uniform(-3, 3, (n, 1))
+    length[::10], length[1::10] = 0.0, 3 * 2.0**-149
+    return _typical(n, rng)[0], _directions(n, rng) * length
+
+
+def _scaled(scale: float) -> Callable[[int, np.random.Generator], tuple[F64, F64]]:
+    def vertices(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+        return rng.uniform(-1, 1, (n, 3)) * scale, _directions(n, rng, 2.0)
+
+    return vertices
+
+
+def _scaled_scene(scale: float) -> gs.Scene:
+    """tests/test_stiff.py's scene times `scale`, the linear attenuation over it: the exact
+    colours do not change, but squared lengths overflow or underflow float32."""
+    lights = [
+        gs.Light(
+            position=(1.0 * scale, 2.0 * scale, 3.0 * scale, 1.0),
+            linear_attenuation=0.2 / scale,
+            diffuse=(0.4,) * 3,
+            specular=(0.3,) * 3,
+        ),
+        gs.Light(
+            position=(0.0, 0.0, 4.0 * scale, 1.0),
+            spot_direction=(0.0, 0.0, -1.0),
+            spot_cutoff=60.0,
+            spot_exponent=4.0,
+            diffuse=(0.3,) * 3,
+        ),
+    ]
+    material = gs.Material(specular=(0.5,) * 3, shininess=20.0)
+    return gs.Scene(lights, material=material, viewer=(0.0, 0.0, 5.0 * scale, 1.0))
+
+
+def _near_k0_zero_light(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Vertices 10^-30 .. 3 from a light at the origin with k0 = 0 (attenuation up to 10^60),
+    every tenth at the light itself."""
+    p = _directions(n, rng, 0.0) * 10 ** rng.uniform(-30, 0.5, (n, 1))
+    p[::10] = 0
+    return p, _directions(n, rng)
+
+
+def _around_cones(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Directions from the lights at the origin over the whole sphere (in front of, on and
+    behind the 90 deg cone's plane), a fifth within 10^-6 rad of the 30 deg cone's edge."""
+    d = _directions(n, rng, 0.0)
+    edge = np.radians(30.0) + rng.uniform(-1e-6, 1e-6, n // 5)
+    turn = rng.uniform(0, 2 * np.pi, n // 5)
+    d[: n // 5] = np.c_[np.sin(edge) * np.cos(turn), np.sin(edge) * np.sin(turn), -np.cos(edge)]
+    return d * rng.uniform(0.5, 2.0, (n, 1)), _directions(n, rng)
+
+
+def _grazing(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """Normals (t, 0, 1) under a light along +x: n . VP = t exactly, |t| from 10^-30 to 0.1,
+    either sign, a tenth 0."""
+    t = rng.choice([-1.0, 1.0], n) * 10 ** rng.uniform(-30, -1, n)
+    t[::10] = 0
+    return _typical(n, rng)[0], np.c_[t, np.zeros(n), np.ones(n)]
+
+
+def _thousand_lights() -> gs.Scene:
+    """1,000 directional lights within 30 deg of +z whose diffuse colours alternate in sign,
+    large against their sum: a running float32 sum loses the small ones (test_stiff's case)."""
+    rng = np.random.default_rng(1)
+    terms = np.sort(rng.uniform(0, 1.5e-4, 1000) * rng.choice([1, 1, 1, 20], 1000))
+    terms = np.ravel(np.c_[terms[::2] * 50, -terms[::2] * 50 + terms[1::2]])
+    tilt, turn = rng.uniform(0, np.radians(30), 1000), rng.uniform(0, 2 * np.pi, 1000)
+    direction = np.c_[np.sin(tilt) * np.cos(turn), np.sin(tilt) * np.sin(turn), np.cos(tilt)]
+    lights = gs.Lights(
+        position=np.c_[direction, np.zeros(1000)],
+        diffuse=np.c_[terms, terms, terms],
+        specular=np.c_[terms, terms, terms] * 0.5,
+    )
+    material = gs.Material(diffuse=(1, 1, 1), specular=(1, 1, 1), shininess=8)
+    return gs.Scene(lights, material=material, global_ambient=(0, 0, 0))
+
+
+def _non_finite_rows(n: int, rng: np.random.Generator) -> tuple[F64, F64]:
+    """The typical vertices with NaN, inf or -inf in one coordinate of 1% of the positions and
+    1% of the normals."""
+    p, normals = _typical(n, rng)
+    for array in (p, normals):
+        rows = rng.choice(n, max(1, n // 100), replace=False)
+        array[rows, rng.integers(0, 3, len(rows))] = rng.choice(
+            [np.nan, np.inf, -np.inf], len(rows)
+        )
+    return p, normals
+
+
+def report_classes() -> list[SceneClass]:
+    """The report's scene classes: the benchmark's three scenes, then every stiff case."""
+    typical = [SceneClass(name, "typical", s, _typical) for name, s in bench_scenes().items()]
+    glossy = gs.Material(diffuse=(0.5,) * 3, specular=(0.6, 0.5, 0.4), shininess=16)
+    cones = [
+        gs.Light(position=(0, 0, 0, 1), spot_direction=(0, 0, -1), spot_cutoff=90.0),
+        gs.Light(
+            position=(0, 0, 0, 1),
+            spot_direction=(0, 0, -1),
+            spot_cutoff=30.0,
+            spot_exponent=3.0,
+            diffuse=(0.4,) * 3,
+        ),
+    ]
+    stiff = [
+        SceneClass(
+            "highlight, s = 10^4",
+            "stiff",
+            gs.Scene(
+                [gs.Light(position=(0.0, 0.0, 1.0, 0.0))],
+                material=gs.Material(diffuse=(0.3,) * 3, specular=(0.7,) * 3, shininess=1e4),
+            ),
+            _highlight,
+        ),
+        SceneClass(
+            "light at the vertex",
+            "stiff",
+            gs.Scene(
+                [
+                    gs.Light(
+                        position=(0.5, -0.25, -3.0, 1.0), linear_attenuation=0.5, ambient=(0.2,) * 3
+                    )
+                ],
+                material=glossy,
+                viewer=(0, 0, 0, 1),
+            ),
+            _at_the_light,
+        ),
+        SceneClass(
+            "L + V = 0",
+            "stiff",
+            gs.Scene(
+                [
+                    gs.Light(position=(0.0, 0.0, -1.0, 0.0)),
+                    gs.Light(position=(1e-3, 0.0, -1.0, 0.0), diffuse=(0.3,) * 3),
+                    gs.Light(position=(0.0, 1e-6, -1.0, 0.0), diffuse=(0.3,) * 3),
+                ],
+                material=glossy,
+            ),
+            lambda n, rng: (_typical(n, rng)[0], -_directions(n, rng)),
+        ),
+        SceneClass(
+            "zero, subnormal, non-unit normals",
+            "stiff",
+            gs.Scene(
+                [gs.Light(position=(0.0, 0.5, 1.0, 0.0), diffuse=(0.3,) * 3, specular=(0.2,) * 3)],
+                material=gs.Material(specular=(0.5,) * 3, shininess=8),
+            ),
+            _normals_of_any_length,
+        ),
+        SceneClass("scaled by 10^30", "stiff", _scaled_scene(1e30), _scaled(1e30)),
+        SceneClass("scaled by 2^-100", "stiff", _scaled_scene(2.0**-100), _scaled(2.0**-100)),
+        SceneClass(
+            "k0 = 0, 10^-30 .. 3 from the light",
+            "stiff",
+            gs.Scene(
+                [
+                    gs.Light(
+                        position=(0, 0, 0, 1),
+                        constant_attenuation=0.0,
+                        quadratic_attenuation=1.0,
+                        ambient=(0.5,) * 3,
+                        diffuse=(0.3,) * 3,
+                    )
+                ],
+                material=gs.Material(ambient=(1, 1, 1), diffuse=(1, 1, 1)),
+                global_ambient=(0, 0, 0),
+            ),
+            _near_k0_zero_light,
+        ),
+        SceneClass(
+            "spot cutoff 90, cone edge",
+            "stiff",
+            gs.Scene(cones, material=gs.Material(diffuse=(0.5,) * 3), global_ambient=(0, 0, 0)),
+            _around_cones,
+        ),
+        SceneClass(
+            "grazing, n.VP to 10^-30",
+            "stiff",
+            gs.Scene(
+                [gs.Light(position=(1.0, 0.0, 0.0, 0.0), diffuse=(0.5,) * 3)],
+                material=gs.Material(specular=(0.5,) * 3, shininess=2.0),
+            ),
+            _grazing,
+        ),
+        SceneClass("1,000 lights, alternating", "stiff", _thousand_lights(), _typical, 0.01),
+        SceneClass(
+            "NaN and inf rows", "stiff", bench_scenes()["1 point, local viewer"], _non_finite_rows
+        ),
+    ]
+    return typical + stiff

@@ -1,0 +1,117 @@
+"""The one timer of the demo, the report, the studies and the benchmarks: a warm-up call, then
+rounds in rotating order, each method once per round; the median and the spread of the rounds.
+
+Every round runs every method, so all methods see the same load on a shared machine, and ratios
+are taken within a round. The order rotates from round to round and runs backwards every other
+round, so every method takes every place and follows two different methods.
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+__all__ = ["BURST", "Timing", "ratio", "time_rounds"]
+
+# Calls per turn in `bench shade` and the report, the fastest counting: the first call after a
+# single-threaded method pays for waking the idle second core and, often, for fresh pages.
+BURST = 3
+
+
+@dataclass(frozen=True)
+class Timing:
+    """Seconds per call of one method over the rounds.
+
+    Attributes
+    ----------
+    seconds : tuple of float
+        One time per round, in round order.
+    """
+
+    seconds: tuple[float, ...]
+
+    @property
+    def median(self) -> float:
+        """The median over the rounds, in seconds."""
+        return statistics.median(self.seconds)
+
+    @property
+    def low(self) -> float:
+        """The fastest round, in seconds: the lower end of the spread."""
+        return min(self.seconds)
+
+    @property
+    def high(self) -> float:
+        """The slowest round, in seconds: the upper end of the spread."""
+        return max(self.seconds)
+
+    def as_dict(self, scale: float = 1.0) -> dict[str, Any]:
+        """``median``, ``low``, ``high`` and ``rounds`` (the per-round times), times `scale`."""
+        return {
+            "median": self.median * scale,
+            "low": self.low * scale,
+            "high": self.high * scale,
+            "rounds": [s * scale for s in self.seconds],
+        }
+
+
+def time_rounds(
+    methods: Mapping[str, Callable[[], Any]],
+    rounds: int,
+    *,
+    settle: float = 0.0,
+    burst: int = 1,
+    on_round: Callable[[], None] | None = None,
+) -> dict[str, Timing]:
+    """Times each method once per round, after one warm-up call of each.
+
+    Parameters
+    ----------
+    methods : mapping of str to callable
+        The calls to time, by name; each is called with no arguments.
+    rounds : int
+        Rounds (>= 1); each gives one time per method.
+    settle : float
+        Seconds of idle before each timed turn: numpy's OpenBLAS keeps its threads spinning for
+        about 0.1 s after a call, and on a 2-core machine they would take a core from whichever
+        method runs next.
+    burst : int
+        Calls per turn (>= 1); the fastest counts: a method's steady rate, without what its
+        first call pays to wake a core that idled while a single-threaded method ran.
+    on_round : callable, optional
+        Called after each round (a progress bar's step).
+
+    Returns
+    -------
+    dict of str to Timing
+        Per method, in the order given.
+    """
+    if rounds < 1 or burst < 1:
+        raise ValueError(f"rounds and burst must be >= 1, got {rounds} and {burst}")
+    for call in methods.values():
+        call()  # warm-up: first-touch of pages, thread start, compilation
+    names = list(methods)
+    times: dict[str, list[float]] = {name: [] for name in names}
+    for r in range(rounds):
+        shift = r % len(names) if names else 0
+        order = names[shift:] + names[:shift]
+        for name in order[::-1] if r % 2 else order:
+            if settle:
+                time.sleep(settle)
+            fastest = float("inf")
+            for _ in range(burst):
+                start = time.perf_counter()
+                methods[name]()
+                fastest = min(fastest, time.perf_counter() - start)
+            times[name].append(fastest)
+        if on_round is not None:
+            on_round()
+    return {name: Timing(tuple(t)) for name, t in times.items()}
+
+
+def ratio(baseline: Timing, own: Timing) -> Timing:
+    """The per-round ratios baseline / own (a speed-up), as a Timing of ratios."""
+    return Timing(tuple(b / o for b, o in zip(baseline.seconds, own.seconds, strict=True)))
