@@ -84,14 +84,14 @@ def test_bench_normals_runs_beside_trimesh() -> None:
     assert difference < 1e-12
 
 
-def test_bench_render_runs_beside_llvmpipe() -> None:
+def test_bench_render_runs_beside_llvmpipe(tmp_path: Path) -> None:
     from conftest import require
 
     require("moderngl")
     args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2"]
     run = subprocess.run(
         [sys.executable, "-m", "glshade", *args],
-        cwd=Path(__file__).resolve().parent.parent,  # the checkout: tests/glpeers.py
+        cwd=tmp_path,  # anywhere: the baseline is glshade.glsl's, not the tests' (no pytest)
         capture_output=True,
         text=True,
         check=True,

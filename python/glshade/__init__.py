@@ -7,7 +7,7 @@
 (1000, 4)
 """
 
-from . import presets
+from . import glsl, presets
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._glshade import __version__
@@ -27,6 +27,7 @@ __all__ = [
     "__version__",
     "disc_light",
     "face_normals",
+    "glsl",
     "presets",
     "rectangle_light",
     "render",
