@@ -10,6 +10,7 @@
 from . import glsl, presets
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
+from ._compare import Comparison, compare
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
 from ._render import Image, render
@@ -19,12 +20,14 @@ from ._shade_mesh import shade_mesh
 
 __all__ = [
     "Camera",
+    "Comparison",
     "Image",
     "Light",
     "Lights",
     "Material",
     "Scene",
     "__version__",
+    "compare",
     "disc_light",
     "face_normals",
     "glsl",
