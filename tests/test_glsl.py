@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 import pytest
+from conftest import require
 
 import glpeers
 import glshade as gs
@@ -208,7 +209,7 @@ def test_uniforms_are_the_scene_values_in_float32() -> None:
 
 def test_raster_shaders_render_like_render_on_a_coloured_mesh() -> None:
     """The helper's render (uint8 vertex colours, world lights) equals gs.render's image."""
-    trimesh = pytest.importorskip("trimesh")
+    trimesh = require("trimesh")
     mesh = trimesh.creation.icosphere(subdivisions=3)
     rng = np.random.default_rng(2)
     mesh.visual.vertex_colors = rng.integers(0, 256, (len(mesh.vertices), 4), dtype=np.uint8)
