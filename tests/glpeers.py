@@ -4,13 +4,11 @@
 - `compat_context()`: an EGL compatibility-profile context (GL 2.1 fixed function) for raw
   PyOpenGL calls, and `load_fixed_function(scene, ...)`, which sets a `gs.Scene` as GL's
   glLight/glMaterial/glLightModel state in it.
-- `LIGHTING_GLSL` (``glsl/ff_lighting.glsl``): the GL 2.1 lighting equation as one GLSL function,
-  written from the spec; `pack_scene` turns a `gs.Scene` into its uniform values and
-  `set_uniforms` (moderngl) / `set_uniforms_gl` (raw GL program) load them.
-- `shade_compute(...)`: `gs.shade`'s signature and output layout, evaluated per vertex by that
-  GLSL in a compute shader.
-- `rasterize(...)`: an eye-space triangle mesh rasterised into float32 targets (lit colour,
-  secondary colour, eye position, eye normal, depth).
+- `shade_compute(...)` and `rasterize(...)`: `glshade.glsl`'s compute shader and raster
+  shaders on that context (`gs.glsl.shade`, `gs.glsl.rasterize`: lit colours, eye position,
+  eye normal, depth in float32 targets).
+- `pyrender_source` / `set_uniforms_gl`: `glshade.glsl`'s lighting library in pyrender's raw
+  GL programs.
 
 When a context cannot be made, the calling test fails under CI=true and is skipped elsewhere
 (`conftest.unavailable`). Every context is created once per session and made current by the
@@ -25,7 +23,7 @@ import os
 import sys
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Literal, NamedTuple
+from typing import Any, Literal
 
 # PyOpenGL picks its platform when it is first imported; pyrender and the fixed-function oracle
 # need EGL (no X server). LIBGL_ALWAYS_SOFTWARE keeps Mesa on llvmpipe even where a GPU driver
@@ -42,9 +40,8 @@ from conftest import unavailable  # noqa: E402
 import glshade as gs  # noqa: E402
 
 GLSL_DIR = Path(__file__).parent / "glsl"
-LIGHTING_GLSL = (GLSL_DIR / "ff_lighting.glsl").read_text()
 
-# GL's limit on fixed-function lights in Mesa (GL_MAX_LIGHTS); the GLSL port takes more.
+# GL's limit on fixed-function lights in Mesa (GL_MAX_LIGHTS); glshade.glsl takes more.
 GL_MAX_LIGHTS = 8
 COLOR_MATERIAL_MODES = {
     None: 0,
@@ -55,7 +52,6 @@ COLOR_MATERIAL_MODES = {
     "ambient_and_diffuse": 5,
 }
 COLOR_MATERIAL_FACES = {"front": 1, "back": 2, "front_and_back": 3}
-SHADING_MODES = {"phong": 0, "gouraud": 1, "flat": 2}
 
 _failures: dict[str, str] = {}
 
@@ -77,18 +73,10 @@ def gl_resource(what: str, make: Any) -> Any:
 # moderngl
 
 
-@functools.cache
-def _moderngl() -> Any:
-    import moderngl
-
-    return moderngl.create_standalone_context(backend="egl", require=430)
-
-
 def moderngl_context() -> Any:
-    """The session's standalone EGL moderngl context (GL >= 4.3 core, llvmpipe), made current."""
-    ctx = gl_resource("moderngl EGL context (require=430)", _moderngl)
-    ctx.__enter__()  # make it current: another context (pyrender, PyOpenGL) may have been
-    return ctx
+    """The session's standalone moderngl context (`gs.glsl.context`: EGL, GL >= 4.3 core,
+    llvmpipe), made current."""
+    return gl_resource("moderngl EGL context (require=430)", gs.glsl.context)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -272,155 +260,43 @@ def load_fixed_function(
 
 
 # ---------------------------------------------------------------------------------------------
-# The GLSL port and its uniforms
+# glshade.glsl's shaders in raw GL programs (pyrender's)
 
 
-class UniformValue(NamedTuple):
-    """A uniform's GLSL type ("int", "uint", "float", "vec3", "vec4", "mat3", "mat4") and its
-    value: shape () or (count,) for scalars, (count, k) for vectors, (k, k) row-major matrices."""
-
-    glsl_type: str
-    value: np.ndarray
-
-
-def max_lights_for(scene: gs.Scene) -> int:
-    """The FF_MAX_LIGHTS a shader needs for `scene`: its light count rounded up to 8. The
-    light arrays are uniforms, about 36 components per light: llvmpipe's 16384 components per
-    stage hold some 400 lights."""
-    return max(8, -(-len(scene.lights) // 8) * 8)
+def pyrender_source(shaders: gs.glsl.Shaders, file_name: str, **defines: int) -> str:
+    """``#version 330 core``, `defines`, GS_TWO_SIDE and GS_NORMALIZE from the shaders' plan,
+    ``shaders.library``, then the file ``glsl/<file_name>``."""
+    plan = shaders.plan
+    defines = {**defines, "GS_TWO_SIDE": int(len(plan.sides) == 2),
+               "GS_NORMALIZE": int(plan.normalize)}  # fmt: skip
+    head = ["#version 330 core", *[f"#define {k} {v}" for k, v in defines.items()]]
+    body = (GLSL_DIR / file_name).read_text()
+    return "\n".join([*head, shaders.library, body])
 
 
-def pack_scene(
-    scene: gs.Scene,
-    *,
-    modelview: Any = None,
-    normalize: bool = False,
-    rescale_normal: bool = False,
-    color_material: str | None = None,
-    color_material_face: str = "front_and_back",
-    max_lights: int | None = None,
-) -> dict[str, UniformValue]:
-    """The uniforms of ``ff_lighting.glsl`` for `scene` and `gs.shade`'s options.
-
-    Parameters are read from the scene in float64; the per-light constants (unit spot
-    direction, cos of the cutoff, exactly 0 at 90 degrees) and the normal matrix are computed in
-    float64 and rounded once to float32. Arrays are padded to `max_lights` (default
-    `max_lights_for(scene)`), which must equal the shader's FF_MAX_LIGHTS.
-    """
-    lights = scene.lights
-    count = len(lights)
-    size = max_lights_for(scene) if max_lights is None else max_lights
-    if count > size:
-        raise ValueError(f"{count} lights do not fit FF_MAX_LIGHTS = {size}")
-
-    def padded(rows: np.ndarray, width: int, fill: float = 0.0) -> np.ndarray:
-        out = np.full((size, width), fill)
-        out[:count] = np.asarray(rows, np.float64).reshape(count, width)
-        return out if width > 1 else out[:, 0]
-
-    direction = np.asarray(lights.spot_direction, np.float64).reshape(count, 3)
-    length = np.linalg.norm(direction, axis=1, keepdims=True)
-    direction = np.divide(direction, length, out=np.zeros_like(direction), where=length > 0)
-    cutoff = np.asarray(lights.spot_cutoff, np.float64).reshape(count)
-    cos_cutoff = np.where(cutoff == 90.0, 0.0, np.cos(np.radians(cutoff)))
-    attenuation = np.stack(
-        [
-            np.asarray(getattr(lights, k), np.float64).reshape(count)
-            for k in ("constant_attenuation", "linear_attenuation", "quadratic_attenuation")
-        ],
-        axis=1,
-    )
-    materials = (scene.material, scene.back_material)
-    m = np.eye(4) if modelview is None else np.asarray(modelview, np.float64)
-    m3_inverse = np.linalg.inv(m[:3, :3])
-    scale = 1.0 / float(np.linalg.norm(m3_inverse[2])) if rescale_normal else 1.0
-
-    def f4(glsl_type: str, value: Any) -> UniformValue:
-        return UniformValue(glsl_type, np.asarray(value, np.float64).astype(np.float32))
-
-    def i4(value: int) -> UniformValue:
-        return UniformValue("int", np.asarray(value, np.int32))
-
-    return {
-        "ff_light_count": i4(count),
-        "ff_light_position": f4("vec4", padded(lights.position, 4)),
-        "ff_light_ambient": f4("vec3", padded(np.asarray(lights.ambient)[..., :3], 3)),
-        "ff_light_diffuse": f4("vec3", padded(np.asarray(lights.diffuse)[..., :3], 3)),
-        "ff_light_specular": f4("vec3", padded(np.asarray(lights.specular)[..., :3], 3)),
-        "ff_light_attenuation": f4("vec3", padded(attenuation, 3)),
-        "ff_spot_direction": f4("vec3", padded(direction, 3)),
-        "ff_spot_exponent": f4("float", padded(lights.spot_exponent, 1)),
-        "ff_spot_cutoff": f4("float", padded(cutoff, 1, 180.0)),
-        "ff_spot_cos_cutoff": f4("float", padded(cos_cutoff, 1, -1.0)),
-        "ff_material_ambient": f4("vec4", [mat.ambient for mat in materials]),
-        "ff_material_diffuse": f4("vec4", [mat.diffuse for mat in materials]),
-        "ff_material_specular": f4("vec4", [mat.specular for mat in materials]),
-        "ff_material_emission": f4("vec4", [mat.emission for mat in materials]),
-        "ff_material_shininess": f4("float", [mat.shininess for mat in materials]),
-        "ff_global_ambient": f4("vec4", scene.global_ambient),
-        "ff_viewer": f4("vec4", scene.viewer),
-        "ff_two_side": i4(int(scene.two_side)),
-        "ff_separate_specular": i4(int(scene.separate_specular)),
-        "ff_phong": i4(int(scene.specular == "phong")),
-        "ff_specular_gate": i4(int(scene.specular_gate)),
-        "ff_color_material": i4(COLOR_MATERIAL_MODES[color_material]),
-        "ff_color_material_faces": i4(
-            COLOR_MATERIAL_FACES[color_material_face] if color_material else 0
-        ),
-        "ff_modelview": f4("mat4", m),
-        "ff_normal_matrix": f4("mat3", m3_inverse.T),
-        "ff_normal_scale": f4("float", scale),
-        "ff_normalize": i4(int(normalize)),
-    }
-
-
-def _column_major(u: UniformValue) -> np.ndarray:
-    return np.ascontiguousarray(u.value.T) if u.glsl_type.startswith("mat") else u.value
-
-
-def set_uniforms(program: Any, uniforms: dict[str, UniformValue]) -> None:
-    """Writes `uniforms` into a moderngl program; names the compiler removed are skipped."""
-    for name, u in uniforms.items():
-        member = program.get(name, None)
-        if member is not None:
-            member.write(np.ascontiguousarray(_column_major(u)).tobytes())
-
-
-def set_uniforms_gl(program: int, uniforms: dict[str, UniformValue]) -> None:
-    """Writes `uniforms` into the current raw GL program `program` (e.g. one of pyrender's)."""
+def set_uniforms_gl(program: int, shaders: gs.glsl.Shaders, ints: dict[str, int]) -> None:
+    """Writes `shaders.uniforms` (and the int uniforms `ints`) into the current raw GL program
+    `program` (e.g. one of pyrender's)."""
     from OpenGL import GL
 
-    setters = {
-        "int": GL.glUniform1iv,
-        "uint": GL.glUniform1uiv,
-        "float": GL.glUniform1fv,
-        "vec3": GL.glUniform3fv,
-        "vec4": GL.glUniform4fv,
-    }
-    for name, u in uniforms.items():
+    setters = {"float": GL.glUniform1fv, "vec3": GL.glUniform3fv, "vec4": GL.glUniform4fv}
+    for name, value in ints.items():
+        location = GL.glGetUniformLocation(program, name)
+        if location >= 0:
+            GL.glUniform1i(location, value)
+    for name, value in shaders.uniforms.items():
         location = GL.glGetUniformLocation(program, name)
         if location < 0:
             continue
-        value = np.ascontiguousarray(u.value)
-        if u.glsl_type == "mat4":
-            GL.glUniformMatrix4fv(location, 1, GL.GL_TRUE, value)
-        elif u.glsl_type == "mat3":
-            GL.glUniformMatrix3fv(location, 1, GL.GL_TRUE, value)
+        glsl_type = shaders.types[name]
+        v = np.ascontiguousarray(value)
+        if glsl_type == "mat4":
+            GL.glUniformMatrix4fv(location, 1, GL.GL_TRUE, v)
+        elif glsl_type == "mat3":
+            GL.glUniformMatrix3fv(location, 1, GL.GL_TRUE, v)
         else:
-            rows = 2 if u.glsl_type.startswith("vec") else 1
-            count = len(value) if value.ndim == rows else 1
-            setters[u.glsl_type](location, count, value)
-
-
-def glsl_source(version: int | str, *parts: str, max_lights: int = 8, **defines: int) -> str:
-    """``#version``, FF_MAX_LIGHTS and `defines`, ``ff_lighting.glsl``, then `parts` (file names
-    under ``glsl/``)."""
-    head = [f"#version {version}", f"#define FF_MAX_LIGHTS {max_lights}"]
-    head += [f"#define {k} {v}" for k, v in defines.items()]
-    body = [(GLSL_DIR / p).read_text() for p in parts]
-    return "\n".join(
-        [*head, "#line 1 1", LIGHTING_GLSL, *[f"#line 1 {i + 2}\n{b}" for i, b in enumerate(body)]]
-    )
+            base, _, count = glsl_type.partition("[")
+            setters[base](location, int(count[:-1]) if count else 1, v)
 
 
 # ---------------------------------------------------------------------------------------------
@@ -531,106 +407,13 @@ def assert_agree(
 
 
 # ---------------------------------------------------------------------------------------------
-# Per vertex: the compute shader
+# Per vertex and per pixel: glshade.glsl's shaders through its moderngl helper
 
 
-@functools.cache
-def _compute_program(max_lights: int) -> Any:
-    return _moderngl().compute_shader(glsl_source(430, "shade.comp", max_lights=max_lights))
-
-
-def shade_compute(
-    positions: Any,
-    normals: Any,
-    scene: gs.Scene,
-    *,
-    modelview: Any = None,
-    normalize: bool = False,
-    rescale_normal: bool = False,
-    colors: Any = None,
-    color_material: str | None = None,
-    color_material_face: str = "front_and_back",
-) -> np.ndarray:
-    """`gs.shade` evaluated by ``ff_lighting.glsl`` in a compute shader, in float32.
-
-    Same arguments and output layout as `gs.shade`: (n, 4), or (k, n, 4) for the k colours
-    ``scene.outputs`` names.
-    """
-    ctx = moderngl_context()
-    p = np.ascontiguousarray(positions, np.float32).reshape(-1, 3)
-    n = np.ascontiguousarray(normals, np.float32).reshape(-1, 3)
-    count = len(p)
-    c = np.ones((count, 4), np.float32)
-    if colors is not None:
-        given = np.asarray(colors, np.float32)
-        c[:, : given.shape[1]] = given
-        color_material = color_material or "ambient_and_diffuse"
-    uniforms = pack_scene(
-        scene,
-        modelview=modelview,
-        normalize=normalize,
-        rescale_normal=rescale_normal,
-        color_material=color_material,
-        color_material_face=color_material_face,
-    )
-    program = _compute_program(max_lights_for(scene))
-    set_uniforms(program, uniforms)
-    program["ff_count"].value = count
-    planes = len(scene.outputs)
-    groups = -(-count // 64)
-    if groups > 65535:
-        raise ValueError(f"at most {65535 * 64} vertices per call, got {count}")
-    buffers = [ctx.buffer(a.tobytes() or b"\0" * 16) for a in (p, n, c)]
-    result = ctx.buffer(reserve=max(16, planes * count * 16))
-    for binding, buffer in enumerate([*buffers, result]):
-        buffer.bind_to_storage_buffer(binding)
-    program.run(group_x=max(groups, 1))
-    out = np.frombuffer(result.read(), np.float32)[: planes * count * 4].reshape(planes, count, 4)
-    for buffer in [*buffers, result]:
-        buffer.release()
-    return out[0].copy() if planes == 1 else out.copy()
-
-
-# ---------------------------------------------------------------------------------------------
-# Per pixel: rasterisation into float targets
-
-
-@dataclass
-class Targets:
-    """Float32 images of `rasterize`, in image convention: row 0 is the top row, and pixel
-    (row r, column c) has its centre at window coordinates (c + 0.5, height - r - 0.5).
-
-    color, secondary : (height, width, 4)
-        The lit primary and secondary colour (front or back by the facing), clamped; 0 where
-        no triangle covers the pixel centre.
-    position : (height, width, 4)
-        The interpolated eye-space position; w = 1 where covered, 0 elsewhere.
-    normal : (height, width, 4)
-        The interpolated eye-space normal (before any normalisation); w = +1 where the
-        covering triangle is front-facing (counter-clockwise), -1 back-facing, 0 uncovered.
-    depth : (height, width)
-        Window depth in [0, 1] of the depth buffer (24-bit), 1 where uncovered.
-    """
-
-    color: np.ndarray
-    secondary: np.ndarray
-    position: np.ndarray
-    normal: np.ndarray
-    depth: np.ndarray
-
-    @property
-    def covered(self) -> np.ndarray:
-        """(height, width) bool: a triangle covers the pixel centre."""
-        return self.position[..., 3] == 1.0
-
-
-@functools.cache
-def _raster_program(max_lights: int, shading: str) -> Any:
-    defines = {"FF_SHADING": SHADING_MODES[shading]}
-    return _moderngl().program(
-        vertex_shader=glsl_source(330, "raster.vert", max_lights=max_lights, **defines),
-        fragment_shader=glsl_source(330, "raster.frag", max_lights=max_lights, **defines),
-    )
+def shade_compute(positions: Any, normals: Any, scene: gs.Scene, **kwargs: Any) -> np.ndarray:
+    """`gs.shade` evaluated by glshade.glsl's compute shader on llvmpipe, in float32: the same
+    arguments and output layout as `gs.shade`."""
+    return gs.glsl.shade(positions, normals, scene, context=moderngl_context(), **kwargs)
 
 
 def rasterize(
@@ -644,83 +427,12 @@ def rasterize(
     *,
     shading: Literal["phong", "gouraud", "flat"] = "phong",
     normalize: bool = False,
-    colors: Any = None,
-    color_material: str | None = None,
-    color_material_face: str = "front_and_back",
-) -> Targets:
-    """Rasterises an eye-space triangle mesh with GL (llvmpipe) into float32 targets.
-
-    Parameters
-    ----------
-    positions, normals : (n, 3) float
-        Eye-space vertex positions and normals (cast to float32).
-    faces : (m, 3) int
-        Vertex indices; counter-clockwise in window space is front-facing.
-    projection : (4, 4) float
-        Row-major projection matrix: clip = projection @ (position, 1).
-    width, height : int
-        The viewport, in pixels.
-    scene : gs.Scene, optional
-        Lit with ``ff_lighting.glsl``: `shading` "phong" per fragment (interpolated position
-        and normal, normalised when `normalize`), "gouraud" per vertex and interpolated,
-        "flat" per vertex from the provoking (last) vertex. Without a scene the colour targets
-        stay 0.
-    colors, color_material, color_material_face
-        As in `gs.shade` (the colour is interpolated like the normal).
-
-    The depth test is on (less), culling and blending are off, no multisampling.
-    """
-    import moderngl
-
-    ctx = moderngl_context()
-    p = np.asarray(positions, np.float32).reshape(-1, 3)
-    count = len(p)
-    vertices = np.ones((count, 10), np.float32)
-    vertices[:, 0:3] = p
-    vertices[:, 3:6] = np.asarray(normals, np.float32).reshape(-1, 3)
-    if colors is not None:
-        given = np.asarray(colors, np.float32)
-        vertices[:, 6 : 6 + given.shape[1]] = given
-        color_material = color_material or "ambient_and_diffuse"
+    **kwargs: Any,
+) -> gs.glsl.Targets:
+    """An eye-space mesh drawn by glshade.glsl's shaders on llvmpipe (`gs.glsl.rasterize`);
+    without a scene, lit by none (emission and ambient only), for the geometry targets."""
     lit = scene if scene is not None else gs.Scene(lights=[])
-    program = _raster_program(max_lights_for(lit), shading)
-    set_uniforms(
-        program,
-        pack_scene(
-            lit,
-            normalize=normalize,
-            color_material=color_material,
-            color_material_face=color_material_face,
-        ),
-    )
-    program["ff_projection"].write(np.asarray(projection, np.float32).T.copy().tobytes())
-    vbo = ctx.buffer(vertices.tobytes())
-    ibo = ctx.buffer(np.ascontiguousarray(faces, np.uint32).tobytes())
-    vao = ctx.vertex_array(
-        program,
-        [(vbo, "3f 3f 4f", "in_position", "in_normal", "in_color")],
-        index_buffer=ibo,
-        index_element_size=4,
-        skip_errors=True,
-    )
-    size = (int(width), int(height))
-    textures = [ctx.texture(size, 4, dtype="f4") for _ in range(4)]
-    depth = ctx.depth_texture(size)
-    fbo = ctx.framebuffer(color_attachments=textures, depth_attachment=depth)
-    fbo.use()
-    ctx.enable_only(moderngl.DEPTH_TEST)
-    ctx.depth_func = "<"
-    ctx.provoking_vertex = moderngl.LAST_VERTEX_CONVENTION
-    fbo.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
-    vao.render(moderngl.TRIANGLES)
-    images = [
-        np.frombuffer(t.read(), np.float32).reshape(size[1], size[0], 4)[::-1].copy()
-        for t in textures
-    ]
-    z = np.frombuffer(depth.read(), np.float32).reshape(size[1], size[0])[::-1].copy()
-    for obj in (vao, fbo, depth, *textures, vbo, ibo):
-        obj.release()
-    if scene is None:
-        images[0][:] = 0.0
-        images[1][:] = 0.0
-    return Targets(images[0], images[1], images[2], images[3], z)
+    return gs.glsl.rasterize(
+        positions, normals, faces, projection, width, height, lit, shading=shading,
+        normalize=normalize, context=moderngl_context(), **kwargs,
+    )  # fmt: skip

@@ -440,10 +440,10 @@ def test_the_docstring_examples_print_what_they_say() -> None:
     import pkgutil
 
     attempted = doctest.testmod(gs, optionflags=doctest.ELLIPSIS).attempted
-    for info in pkgutil.iter_modules(gs.__path__):
-        if info.name.startswith("_bench") or info.name == "__main__":
+    for info in pkgutil.walk_packages(gs.__path__, "glshade."):  # glshade.glsl's modules too
+        if info.name.rsplit(".", 1)[-1].startswith("_bench") or info.name.endswith("__main__"):
             continue
-        module = importlib.import_module(f"glshade.{info.name}")
+        module = importlib.import_module(info.name)
         result = doctest.testmod(module, optionflags=doctest.ELLIPSIS, verbose=False)
         assert result.failed == 0, info.name
         attempted += result.attempted

@@ -101,7 +101,7 @@ def test_bench_render_runs_beside_llvmpipe(tmp_path: Path) -> None:
     args.append(str(path))
     run = subprocess.run(
         [sys.executable, "-m", "glshade", *args],
-        cwd=Path(__file__).resolve().parent.parent,  # the checkout: tests/glpeers.py
+        cwd=tmp_path,  # anywhere: the baseline is glshade.glsl's, not the tests' (no pytest)
         capture_output=True,
         text=True,
         check=True,

@@ -1,11 +1,11 @@
 """`render` against OpenGL itself: Mesa's llvmpipe through moderngl, rendering the same mesh
-into float32 targets with the GLSL port of the lighting equation (`glpeers.rasterize`), per
+into float32 targets with glshade.glsl's shaders (`glpeers.rasterize`), per
 vertex for Gouraud and flat shading and per fragment for Phong.
 
 GL gets the mesh in eye coordinates (view applied here in float64, normals by the inverse
 transpose); flat shading gets unshared vertices that carry their face's normal, so that the
-provoking vertex lights the face with it. The targets hold GL's primary and secondary colours,
-which the colour sum adds and clamps, as `render` does.
+provoking vertex lights the face with it. The targets hold GL's colour sum of the primary and
+secondary colours, added and clamped as `render` does it.
 """
 
 from __future__ import annotations
@@ -120,9 +120,7 @@ def gl_render(
         colors=colors,
         color_material=case.get("colors"),
     )
-    rgb = np.clip(targets.color[..., :3] + targets.secondary[..., :3], 0, 1)
-    image = np.concatenate([rgb, targets.color[..., 3:]], axis=-1)
-    return image, targets.depth, targets.covered
+    return targets.color, targets.depth, targets.covered
 
 
 def vertex_colours(n: int) -> np.ndarray:

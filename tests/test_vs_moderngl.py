@@ -1,11 +1,13 @@
-"""glshade against a GLSL port of the lighting equation run by Mesa's llvmpipe through moderngl.
+"""glshade against glshade.glsl, the lighting equation in GLSL, run by Mesa's llvmpipe through
+moderngl.
 
-The port (glsl/ff_lighting.glsl) is written from the GL 2.1 specification, independently of
-glshade's Rust code, and covers everything gs.shade does (Phong, any viewer point, any number
+glshade.glsl is written from the GL 2.1 specification, independently of glshade's Rust code
+(it shares the plan's rules of what to leave out, not its arithmetic), and covers everything
+gs.shade does (Phong, any viewer point, any number
 of lights, colour material, two-sided lighting, separate specular, modelview, normalize,
 rescale). It runs
 
-(a) per vertex in a compute shader (glpeers.shade_compute) on the random scenes of scenes.py,
+(a) per vertex in its compute shader (glpeers.shade_compute) on the random scenes of scenes.py,
     the same ones test_vs_spec.py checks against the float64 oracle;
 (b) per pixel: a triangle mesh rasterised with perspective, its interpolated eye-space
     positions and normals written to RGBA32F targets beside the colour lit from them
@@ -173,7 +175,7 @@ def test_per_pixel_lighting_agrees_on_float_targets(seed: int) -> None:
     # What a rasteriser shows: the front colours on front faces, the back ones on back faces.
     per_side = len(got) // (2 if ref.two_side else 1)
     shown = np.where(front[None, :, None], got[:per_side], got[per_side:]) if ref.two_side else got
-    port = np.stack([targets.color[covered], targets.secondary[covered]])[:per_side]
+    port = np.stack([targets.primary[covered], targets.secondary[covered]])[:per_side]
     # The bound covers both sides (its magnitude is the larger of the two).
     compared = check(ref, p, n, shown, port, f"seed {seed}")
     assert compared >= 0.95 * covered.sum()
@@ -209,7 +211,7 @@ def test_flat_shading_shows_each_triangles_last_vertex_colour() -> None:
     lit = gs.shade(vertices.astype(np.float32), normals.astype(np.float32), scene)
     provoking = np.unique(faces[:, 2])
     colours = lit[provoking] if lit.ndim == 2 else lit[0, provoking]
-    shown = targets.color[targets.covered & (targets.normal[..., 3] > 0)]
+    shown = targets.primary[targets.covered & (targets.normal[..., 3] > 0)]
     distance = np.abs(shown[:, None, :] - colours[None, :, :]).max(axis=2).min(axis=1)
     assert len(shown) > 500
     assert distance.max() <= TOL

@@ -208,8 +208,9 @@ def test_depth_and_coverage_are_the_rays_through_sample_0(renderer: Any) -> None
 
 
 class FixedFunctionProgram(pyrender.shader_program.ShaderProgram):  # type: ignore[misc]
-    """pyrender's program wrapper around glsl/pyrender.vert and .frag; on bind it also loads
-    the uniforms of `state` (a glpeers.pack_scene result plus ff_output)."""
+    """pyrender's program wrapper around glsl/pyrender.vert and .frag with glshade.glsl's
+    lighting library; on bind it also loads the uniforms of `state` (the scene's
+    gs.glsl.Shaders and ff_output)."""
 
     def __init__(self, defines: dict[str, Any], state: dict[str, Any]) -> None:
         super().__init__("pyrender.vert", "pyrender.frag", defines=defines)
@@ -217,13 +218,13 @@ class FixedFunctionProgram(pyrender.shader_program.ShaderProgram):  # type: igno
 
     def _load(self, shader_filename: str) -> str:
         defines = {k: v for k, v in self.defines.items() if k in ("NORMAL_LOC", "INST_M_LOC")}
-        return glpeers.glsl_source(
-            "330 core", shader_filename, max_lights=self.state["max_lights"], **defines
-        )
+        return glpeers.pyrender_source(self.state["shaders"], shader_filename, **defines)
 
     def _bind(self) -> None:
         super()._bind()
-        glpeers.set_uniforms_gl(self._program_id, self.state["uniforms"])
+        glpeers.set_uniforms_gl(
+            self._program_id, self.state["shaders"], {"ff_output": self.state["output"]}
+        )
 
 
 class FixedFunctionCache(pyrender.shader_program.ShaderProgramCache):  # type: ignore[misc]
@@ -240,7 +241,7 @@ class FixedFunctionCache(pyrender.shader_program.ShaderProgramCache):  # type: i
         geometry_shader: str | None = None,
         defines: dict[str, Any] | None = None,
     ) -> FixedFunctionProgram:
-        key = (self.state["max_lights"], *sorted((defines or {}).items()))
+        key = (self.state["shaders"].library, *sorted((defines or {}).items()))
         if key not in self._program_cache:
             self._program_cache[key] = FixedFunctionProgram(dict(defines or {}), self.state)
         program: FixedFunctionProgram = self._program_cache[key]
@@ -250,7 +251,7 @@ class FixedFunctionCache(pyrender.shader_program.ShaderProgramCache):  # type: i
 def render_ours(renderer: Any, scene: Any, state: dict[str, Any], output: int) -> np.ndarray:
     """(HEIGHT, WIDTH, 3) uint8: pyrender's render with our program, `output` as in
     glsl/pyrender.frag; faces are not culled (two-sided scenes show their backs)."""
-    state["uniforms"]["ff_output"] = glpeers.UniformValue("int", np.asarray(output, np.int32))
+    state["output"] = output
     previous = renderer._renderer._program_cache
     renderer._renderer._program_cache = FixedFunctionCache(state)
     try:
@@ -292,10 +293,7 @@ def shading_normals(m: Any, hits: Hits) -> np.ndarray:
 
 def scene_state(ref: RefScene) -> dict[str, Any]:
     scene = to_glshade(ref)
-    return {
-        "max_lights": glpeers.max_lights_for(scene),
-        "uniforms": glpeers.pack_scene(scene, normalize=ref.normalize),
-    }
+    return {"shaders": gs.glsl.raster_shaders(scene, normalize=ref.normalize), "output": 0}
 
 
 def lit_case(seed: int) -> RefScene:

@@ -7,9 +7,10 @@
 (1000, 4)
 """
 
-from . import presets
+from . import glsl, presets
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
+from ._compare import Comparison, compare
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
 from ._render import Image, render
@@ -20,6 +21,7 @@ from ._tools.report import Report, report  # last: the tools use the names above
 
 __all__ = [
     "Camera",
+    "Comparison",
     "Image",
     "Light",
     "Lights",
@@ -27,8 +29,10 @@ __all__ = [
     "Report",
     "Scene",
     "__version__",
+    "compare",
     "disc_light",
     "face_normals",
+    "glsl",
     "presets",
     "rectangle_light",
     "render",

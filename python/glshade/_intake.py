@@ -11,6 +11,8 @@ The rules (the README's table):
   Results have that dtype. Scene parameters and matrices are float64.
 - What the native module reads is a C-contiguous, aligned, native-order array: an argument that
   already is one is used as it is, anything else is copied.
+- Vertex colours of dtype uint8 (trimesh's, PNG's, PIL's 0-255) are scaled to [0, 1] by 1/255;
+  any other dtype is taken as the colour values themselves.
 - ``out=`` is never copied: it must be exactly right, and it must not share memory with an input
   (checked exactly by the native module, and here for two maps of one file).
 """
@@ -92,7 +94,7 @@ def vertices(
         return ready(p, dtype), ready(n, dtype), None
     given = {"positions": p, "normals": n}
     if colors is not None:
-        given["colors"] = array(colors, "colors")
+        given["colors"] = color_values(array(colors, "colors"))
     leading = []
     for name, a in given.items():
         if a.ndim == 0 or a.shape[-1] not in _WIDTHS[name]:
@@ -111,6 +113,14 @@ def vertices(
     ]
     c = ready_arrays[2] if colors is not None else None
     return ready_arrays[0], ready_arrays[1], c
+
+
+def color_values(a: NDArray[Any]) -> NDArray[Any]:
+    """Colours of dtype uint8 (0-255) as float64 in [0, 1]; others as they are."""
+    if a.dtype == np.uint8:
+        scaled: NDArray[Any] = a / 255.0
+        return scaled
+    return a
 
 
 def rows(

@@ -8,6 +8,7 @@ from numpy.typing import ArrayLike
 
 from . import _glshade
 from ._intake import FloatArray, indices, rows
+from ._trimesh import as_mesh, is_mesh
 
 __all__ = ["face_normals", "vertex_normals"]
 
@@ -16,14 +17,15 @@ Weighting = Literal["angle", "area", "uniform"]
 
 def _mesh(vertices: Any, faces: ArrayLike | None) -> tuple[FloatArray, Any]:
     """(vertices, faces), taken from a mesh object (trimesh.Trimesh or anything with `.vertices`
-    and `.faces`) when `faces` is None."""
+    and `.faces`, or a trimesh.Scene flattened by its graph) when `faces` is None."""
     if faces is None:
-        if not (hasattr(vertices, "vertices") and hasattr(vertices, "faces")):
+        if not is_mesh(vertices):
             raise TypeError(
                 "faces is required unless the first argument is a mesh with .vertices and .faces, "
                 f"got {type(vertices)!r}"
             )
-        vertices, faces = vertices.vertices, vertices.faces
+        mesh = as_mesh(vertices)
+        vertices, faces = mesh.vertices, mesh.faces
     return rows(vertices, "vertices"), indices(faces, "faces")
 
 

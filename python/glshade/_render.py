@@ -10,9 +10,9 @@ from numpy.typing import ArrayLike
 
 from . import _glshade
 from ._camera import Camera, _matrix
-from ._intake import FloatArray, choice, flag, integer, optional_choice, rows
-from ._normals import _mesh
+from ._intake import FloatArray, choice, flag, integer, optional_choice
 from ._png import encode_png, write_png
+from ._render_input import render_input
 from ._scene import Scene, _rgba
 from ._shade import ColorMaterialMode
 
@@ -77,15 +77,15 @@ def _plain_unless_image(value: Any) -> Any:
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | None,
-    scene: Scene,
-    camera: Camera,
+    faces: ArrayLike | Scene | None = ...,
+    scene: Scene | Camera | None = ...,
+    camera: Camera | None = ...,
     *,
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
     normals: ArrayLike | None = ...,
-    colors: ArrayLike | None = ...,
+    colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
     color_material_face: Literal["front", "back", "front_and_back"] = ...,
     model: ArrayLike | None = ...,
@@ -93,20 +93,21 @@ def render(
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
+    lights_in: Literal["eye", "world"] = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | None,
-    scene: Scene,
-    camera: Camera,
+    faces: ArrayLike | Scene | None = ...,
+    scene: Scene | Camera | None = ...,
+    camera: Camera | None = ...,
     *,
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
     normals: ArrayLike | None = ...,
-    colors: ArrayLike | None = ...,
+    colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
     color_material_face: Literal["front", "back", "front_and_back"] = ...,
     model: ArrayLike | None = ...,
@@ -114,20 +115,21 @@ def render(
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
+    lights_in: Literal["eye", "world"] = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | None,
-    scene: Scene,
-    camera: Camera,
+    faces: ArrayLike | Scene | None = ...,
+    scene: Scene | Camera | None = ...,
+    camera: Camera | None = ...,
     *,
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
     normals: ArrayLike | None = ...,
-    colors: ArrayLike | None = ...,
+    colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
     color_material_face: Literal["front", "back", "front_and_back"] = ...,
     model: ArrayLike | None = ...,
@@ -135,19 +137,20 @@ def render(
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
+    lights_in: Literal["eye", "world"] = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
     vertices: Any,
-    faces: ArrayLike | None,
-    scene: Scene,
-    camera: Camera,
+    faces: ArrayLike | Scene | None = None,
+    scene: Scene | Camera | None = None,
+    camera: Camera | None = None,
     *,
     width: int = 512,
     height: int = 512,
     shading: Shading = "phong",
     normals: ArrayLike | None = None,
-    colors: ArrayLike | None = None,
+    colors: ArrayLike | Literal[False] | None = None,
     color_material: ColorMaterialMode | None = None,
     color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
     model: ArrayLike | None = None,
@@ -155,6 +158,7 @@ def render(
     rescale_normal: bool = False,
     cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
+    lights_in: Literal["eye", "world"] = "eye",
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -162,12 +166,14 @@ def render(
     Parameters
     ----------
     vertices : (n, 3) float32 or float64, or a mesh
-        Vertex positions in model coordinates; or an object with ``.vertices`` and ``.faces``
-        (a ``trimesh.Trimesh``) when `faces` is None.
+        Vertex positions in model coordinates; or, with `faces` omitted, an object with
+        ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``) or a ``trimesh.Scene`` (flattened
+        by ``scene.to_mesh()``, its graph's transforms applied): ``render(mesh, scene, camera)``.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle; counter-clockwise on screen is the front.
     scene : Scene
-        Lights and viewer in eye coordinates (as for `shade`), materials, light model. With
+        Lights and viewer in eye coordinates (as for `shade`; see `lights_in`), materials,
+        light model. With
         ``two_side``, back-facing triangles get the back colour; with ``separate_specular``,
         the specular colour is added after interpolation and the sum clamped (GL's colour sum).
     camera : Camera
@@ -182,9 +188,12 @@ def render(
     normals : (n, 3) or (m, 3) float, optional
         One normal per vertex for Phong and Gouraud, one per face for flat shading. Default:
         `vertex_normals` (angle-weighted) or `face_normals` of the mesh.
-    colors : (n, 3) or (n, 4) float, optional
+    colors : (n, 3) or (n, 4) float or uint8, optional, or False
         Per-vertex colours for ``GL_COLOR_MATERIAL``, interpolated like the normals (flat
-        shading takes the last vertex's); `color_material` defaults to "ambient_and_diffuse".
+        shading takes the last vertex's); uint8 colours are scaled by 1/255. `color_material`
+        defaults to "ambient_and_diffuse". Default: a mesh's own colours (``mesh.visual`` of
+        kind "vertex" or "face"; a face's colour lights its three corners, which then have
+        corners of their own), none otherwise. False: no colours, whatever the mesh has.
     color_material, color_material_face : str
         As for `shade`.
     model : (4, 4) float, optional
@@ -199,6 +208,11 @@ def render(
         Which triangles to discard by their winding on screen (None: none, GL's default).
     background : (3,) or (4,) float
         The clear colour; default transparent black.
+    lights_in : {"eye", "world"}
+        Where the scene's lights and viewer are given. "world": fixed in the world, moved into
+        eye coordinates by ``camera.view`` (`Scene.in_eye_space`: GL's ``glLoadMatrix(view)``
+        before ``glLight``), so an orbiting camera sees them stay put; GL's own viewers
+        (0, 0, 1, 0) and (0, 0, 0, 1) stay with the eye.
     depth : bool
         Also return the depth buffer.
 
@@ -225,31 +239,33 @@ def render(
     >>> image.shape, image.dtype
     ((4, 4, 4), dtype('float32'))
     """
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a glshade.Camera, got {type(camera)!r}")
-    v, f = _mesh(vertices, faces)
-    n = None if normals is None else rows(normals, "normals", v.dtype)
-    c = None
-    if colors is not None:
-        c = rows(colors, "colors", v.dtype, (3, 4))
-        color_material = color_material or "ambient_and_diffuse"
+    given = render_input(
+        vertices,
+        faces,
+        scene,
+        camera,
+        shading=shading,
+        normals=normals,
+        colors=colors,
+        color_material=color_material,
+        lights_in=lights_in,
+    )
+    v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
     w = integer(width, "width", 1, _glshade.MAX_SIZE)
     h = integer(height, "height", 1, _glshade.MAX_SIZE)
     image, z = _glshade.render(
         v,
         f,
-        scene._native,
-        camera.view,
-        camera.projection_matrix(w, h),
+        given.scene._native,
+        lens.view,
+        lens.projection_matrix(w, h),
         _matrix(model, "model"),
         w,
         h,
         choice(shading, "shading"),
         n,
         c,
-        optional_choice(color_material, "color_material"),
+        optional_choice(given.color_material, "color_material"),
         choice(color_material_face, "color_material_face"),
         flag(normalize, "normalize"),
         flag(rescale_normal, "rescale_normal"),

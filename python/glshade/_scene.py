@@ -448,6 +448,57 @@ class Scene:
             "float64" if name == "float64" else "float32",
         )
 
+    def in_eye_space(self, view: ArrayLike) -> Scene:
+        """This scene with its lights and viewer given in world coordinates, moved into eye
+        coordinates by `view`: GL's order of calls, ``glLoadMatrix(view)`` before ``glLight``.
+
+        Light positions (points and directions alike) become ``view @ position``, spot
+        directions ``view[:3, :3] @ spot_direction`` (GL transforms both when glLight is
+        called). The viewer moves too when it is a world point ``(x, y, z, 1)`` or direction
+        ``(x, y, z, 0)``, except GL's two viewers, (0, 0, 1, 0) (infinite) and (0, 0, 0, 1)
+        (at the eye), which belong to the eye and stay. Everything else is unchanged.
+
+        Parameters
+        ----------
+        view : (4, 4) float
+            World to eye coordinates (``camera.view``): affine and finite.
+
+        Returns
+        -------
+        Scene
+            A new scene; this one is unchanged.
+
+        Examples
+        --------
+        >>> import glshade as gs
+        >>> camera = gs.Camera.look_at(eye=(0, 0, 5))
+        >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 2, 1))]).in_eye_space(camera.view)
+        >>> scene.lights.position
+        array([[ 0.,  0., -3.,  1.]])
+        """
+        m = matrix(view, "view")
+        if not np.isfinite(m).all() or not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
+            raise ValueError(f"view must be finite and affine (last row (0, 0, 0, 1)), got {m}")
+        count = len(self._lights)
+        columns: dict[str, Any] = {n: self._lights._column(n) for n in _glshade.Lights.PARAMETERS}
+        columns["position"] = columns["position"].reshape(count, 4) @ m.T
+        columns["spot_direction"] = columns["spot_direction"].reshape(count, 3) @ m[:3, :3].T
+        lights = Lights(**columns) if count else Lights(count=0)
+        viewer = self.viewer
+        if tuple(viewer) not in ((0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0)):
+            viewer = m @ viewer
+        return Scene(
+            lights=lights,
+            material=self.material,
+            back_material=None if self.back_material is self.material else self.back_material,
+            global_ambient=self.global_ambient,
+            viewer=viewer,
+            two_side=self.two_side,
+            separate_specular=self.separate_specular,
+            specular=self.specular,  # type: ignore[arg-type]
+            specular_gate=self.specular_gate,
+        )
+
     def __repr__(self) -> str:
         return (
             f"Scene({self._lights!r}, material={self.material!r}, "

@@ -8,9 +8,8 @@ its results as JSON with the machine description (`save`).
 from __future__ import annotations
 
 import functools
-import importlib
 import json
-import sys
+import os
 from collections.abc import Callable
 from pathlib import Path
 from typing import Any
@@ -134,28 +133,21 @@ def bench_normals(
     return 0
 
 
-def _glpeers() -> Any:
-    """The tests' GL helpers (``tests/glpeers.py`` of a source checkout, found beside the package
-    or in the working directory: moderngl on Mesa's llvmpipe and the GLSL port of the lighting
-    equation), or None with the reason printed."""
+def _llvmpipe() -> Any:
+    """glshade.glsl's moderngl context on Mesa's llvmpipe (``LIBGL_ALWAYS_SOFTWARE=1`` unless
+    set otherwise), or None with the reason printed."""
+    os.environ.setdefault("LIBGL_ALWAYS_SOFTWARE", "1")
     try:
-        import moderngl  # noqa: F401
-    except ImportError:
-        print("moderngl is not installed (pip install moderngl): no llvmpipe baseline")
+        return gs.glsl.context()
+    except (ImportError, RuntimeError) as exc:
+        print(f"{exc}: no llvmpipe baseline")
         return None
-    # The checkout holding the package (an editable install), else the working directory.
-    places = [Path(__file__).resolve().parents[2] / "tests", Path.cwd() / "tests"]
-    tests = next((p for p in places if (p / "glpeers.py").is_file()), None)
-    if tests is None:
-        print("no tests/glpeers.py here or beside the package: run from a source checkout")
-        return None
-    sys.path.insert(0, str(tests))
-    return importlib.import_module("glpeers")
 
 
 class LlvmpipeRenderer:
-    """The baseline: the same mesh drawn by Mesa's llvmpipe through moderngl, with the GLSL port
-    of the equation (per fragment for Phong, per vertex otherwise) into an RGBA32F target.
+    """The baseline: the same mesh drawn by Mesa's llvmpipe through moderngl, with
+    `glshade.glsl`'s raster shaders of the scene (per fragment for Phong, per vertex otherwise)
+    into an RGBA32F target.
 
     Programs, buffers and the framebuffer are made once; each call uploads the vertices, clears,
     draws and reads the image back into numpy (row 0 at the top), as `gs.render` returns it.
@@ -163,7 +155,7 @@ class LlvmpipeRenderer:
 
     def __init__(
         self,
-        glpeers: Any,
+        ctx: Any,
         mesh: tuple[NDArray[np.float64], NDArray[np.int64]],
         shading: str,
         scene: gs.Scene,
@@ -172,7 +164,7 @@ class LlvmpipeRenderer:
     ) -> None:
         import moderngl
 
-        self.ctx = glpeers.moderngl_context()
+        self.ctx = ctx
         v, f = mesh
         view, normal_matrix = camera.view, np.linalg.inv(camera.view[:3, :3]).T
         eye = v @ view[:3, :3].T + view[:3, 3]
@@ -181,21 +173,18 @@ class LlvmpipeRenderer:
             eye, f = eye[f].reshape(-1, 3), np.arange(3 * len(f)).reshape(-1, 3)
         else:
             normals = gs.vertex_normals(v, f) @ normal_matrix.T
-        self.vertices = np.ones((len(eye), 10), np.float32)
+        self.vertices = np.ones((len(eye), 6), np.float32)
         self.vertices[:, :3], self.vertices[:, 3:6] = eye, normals
-        mode = glpeers.SHADING_MODES[shading]
-        program = self.ctx.program(
-            vertex_shader=glpeers.glsl_source(330, "raster.vert", FF_SHADING=mode),
-            fragment_shader=glpeers.glsl_source(330, "raster.frag", FF_SHADING=mode),
-        )
-        glpeers.set_uniforms(program, glpeers.pack_scene(scene, normalize=True))
+        shaders = gs.glsl.raster_shaders(scene, shading, normalize=True)  # type: ignore[arg-type]
+        program = self.ctx.program(**shaders.sources)
+        shaders.bind(program)
         projection = camera.projection_matrix(size, size)
-        program["ff_projection"].write(projection.T.astype(np.float32).tobytes())
+        program["gs_projection"].write(projection.T.astype(np.float32).tobytes())
         self.vbo = self.ctx.buffer(reserve=self.vertices.nbytes)
         ibo = self.ctx.buffer(np.ascontiguousarray(f, np.uint32).tobytes())
         self.vao = self.ctx.vertex_array(
             program,
-            [(self.vbo, "3f 3f 4f", "in_position", "in_normal", "in_color")],
+            [(self.vbo, "3f 3f", "gs_position", "gs_normal")],
             index_buffer=ibo,
             index_element_size=4,
             skip_errors=True,
@@ -235,7 +224,7 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
         f"a torus of {len(f):,} triangles ({len(v):,} vertices), {size}x{size}, float32; "
         f"{len(scene.lights)} lights; {repeat} rounds, each method once per round"
     )
-    glpeers = _glpeers()
+    llvmpipe = _llvmpipe()
     methods: dict[str, Callable[[], Any]] = {}
     for shading in ("flat", "gouraud", "phong"):
         given = gs.face_normals(v32, f) if shading == "flat" else normals
@@ -250,9 +239,9 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
             shading=shading,
             normals=given,
         )
-        if glpeers is not None:
+        if llvmpipe is not None:
             methods[f"llvmpipe {shading}"] = LlvmpipeRenderer(
-                glpeers, mesh, shading, scene, camera, size
+                llvmpipe, mesh, shading, scene, camera, size
             )
     results = {name: np.asarray(call()) for name, call in methods.items()}
     times = time_rounds(methods, repeat)
@@ -261,7 +250,7 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
         print(f"  {name:24} {t.median * 1e3:7.1f} ms")
     settings = {"faces": len(f), "vertices": len(v), "size": size, "rounds": repeat}
     saved: dict[str, Any] = {"ms": {k: t.as_dict(1e3) for k, t in times.items()}}
-    if glpeers is None:
+    if llvmpipe is None:
         save(json_path, "render", settings, saved)
         return 0
     print("\n  shading   pixels within 1e-4 of llvmpipe   speed-up (median of per-round ratios)")

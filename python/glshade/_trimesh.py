@@ -1,0 +1,49 @@
+"""Meshes as they come: a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``), a
+``trimesh.Scene`` flattened into one mesh, and the colours a mesh carries. trimesh itself is
+never imported: its objects are read through their attributes."""
+
+from __future__ import annotations
+
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import NDArray
+
+
+def is_mesh(obj: Any) -> bool:
+    """True for anything with ``.vertices`` and ``.faces``, or a ``trimesh.Scene``."""
+    return (hasattr(obj, "vertices") and hasattr(obj, "faces")) or _is_scene(obj)
+
+
+def _is_scene(obj: Any) -> bool:
+    return hasattr(obj, "geometry") and hasattr(obj, "graph") and hasattr(obj, "dump")
+
+
+def as_mesh(obj: Any) -> Any:
+    """`obj`, or for a ``trimesh.Scene`` one mesh of all its geometry placed by the scene graph
+    (``scene.to_mesh()``: every node's transform applied, colours kept where they concatenate)."""
+    if not _is_scene(obj):
+        return obj
+    if not obj.geometry:
+        raise ValueError("the trimesh.Scene holds no geometry")
+    flatten = getattr(obj, "to_mesh", None)
+    mesh = flatten() if flatten is not None else obj.dump(concatenate=True)
+    if not (hasattr(mesh, "vertices") and hasattr(mesh, "faces")):
+        raise TypeError(
+            f"the trimesh.Scene did not flatten into a triangle mesh (got {type(mesh)!r}): "
+            "it holds paths or point clouds; pass its Trimesh geometry"
+        )
+    return mesh
+
+
+def mesh_colors(mesh: Any) -> tuple[NDArray[Any], Literal["vertex", "face"]] | None:
+    """The colours `mesh` defines (``mesh.visual`` of kind "vertex" or "face", uint8 RGBA as
+    trimesh stores them), or None for a mesh without colours of its own (trimesh's default
+    grey, textures, or no ``visual``)."""
+    visual = getattr(mesh, "visual", None)
+    kind = getattr(visual, "kind", None)
+    if kind == "vertex":
+        return np.asarray(visual.vertex_colors), "vertex"  # type: ignore[union-attr]
+    if kind == "face":
+        return np.asarray(visual.face_colors), "face"  # type: ignore[union-attr]
+    return None
