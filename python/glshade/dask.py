@@ -105,13 +105,13 @@ def shade(
     outputs = probe.shape[0] if probe.ndim == 3 else None
     axes = string.ascii_lowercase[: len(leading)]
     arguments: list[Any] = []
-    for x in inputs:
+    for x, last in zip(inputs, "ccz", strict=False):
         x = da.broadcast_to(x, (*leading, x.shape[-1])).rechunk({len(leading): -1})
-        arguments += [x, (*axes, "z")]
+        arguments += [x, (*axes, last)]
     # One key for the scene and keywords: every task refers to it; each worker fetches it once.
     call = delayed((scene, shade_kwargs), pure=True)
     index = ("k", *axes, "c") if outputs else (*axes, "c")
-    new_axes = {"c": 4, "k": outputs} if outputs else {"c": 4}
+    new_axes = {"k": outputs} if outputs else {}
     return da.blockwise(
         _shade_chunk,
         index,
@@ -119,6 +119,7 @@ def shade(
         call,
         None,
         new_axes=new_axes,
+        adjust_chunks={"c": 4},
         dtype=probe.dtype,
         meta=np.zeros((0,) * len(index), probe.dtype),
         concatenate=True,
@@ -208,7 +209,14 @@ def from_npy(path: str | os.PathLike[str], chunks: int = 500_000) -> da.Array:
         raise ValueError(f"chunks must be a positive int (rows per chunk), got {chunks!r}")
     if len(shape) == 0:
         raise ValueError(f"{path} holds a 0-d array; from_npy chunks along the first axis")
-    return da.from_array(_NpyFile(path, shape, dtype), chunks=(int(chunks), *shape[1:]))
+    # A blockwise layer of its own, so that dask fuses each read into the task that uses it.
+    return da.map_blocks(
+        _read_rows,
+        _NpyFile(path, shape, dtype),
+        chunks=da.core.normalize_chunks((int(chunks), *shape[1:]), shape),
+        dtype=dtype,
+        meta=np.zeros((0,) * len(shape), dtype),
+    )
 
 
 def to_npy(array: da.Array, path: str | os.PathLike[str]) -> NDArray[Any]:
@@ -250,6 +258,14 @@ def _dask_array(x: Any, name: str) -> da.Array:
     return array
 
 
+def _read_rows(file: _NpyFile, block_info: dict[Any, Any] | None = None) -> NDArray[Any]:
+    """One task: the rows of one chunk of a ``.npy`` file, mapped, not copied."""
+    assert block_info is not None  # dask passes it to functions that take it
+    (start, stop), *_ = block_info[None]["array-location"]
+    rows: NDArray[Any] = np.load(file.path, mmap_mode="r")[start:stop]
+    return rows
+
+
 def _shade_chunk(*arguments: Any) -> NDArray[Any]:
     """One task: `glshade.shade` over one chunk of rows."""
     *arrays, (scene, shade_kwargs) = arguments
@@ -259,8 +275,8 @@ def _shade_chunk(*arguments: Any) -> NDArray[Any]:
 
 
 class _NpyFile:
-    """A ``.npy`` file as dask reads and writes arrays: it pickles as its path, and opens the
-    file's memory map on each access, in whichever process makes it."""
+    """A ``.npy`` file as tasks read and write it: it pickles as its path, and each access maps
+    the file in whichever process makes it."""
 
     def __init__(self, path: str, shape: tuple[int, ...], dtype: np.dtype[Any]) -> None:
         self.path, self.shape, self.dtype, self.ndim = (
@@ -270,13 +286,9 @@ class _NpyFile:
             len(shape),
         )
 
-    def __getitem__(self, key: Any) -> NDArray[Any]:
-        return np.array(np.load(self.path, mmap_mode="r")[key])
-
     def __setitem__(self, key: Any, value: NDArray[Any]) -> None:
-        mapped = np.load(self.path, mmap_mode="r+")
-        mapped[key] = value
-        mapped.flush()
+        # No flush: other processes see the pages at once, and the kernel writes them back.
+        np.load(self.path, mmap_mode="r+")[key] = value
 
     def __dask_tokenize__(self) -> tuple[Any, ...]:
         # The file's identity and version, so that a rewritten file gets new keys.

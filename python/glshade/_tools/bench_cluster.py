@@ -75,7 +75,6 @@ def bench_cluster(
         def local() -> None:
             p, n = np.load(positions, mmap_mode="r"), np.load(normals, mmap_mode="r")
             gs.shade(p, n, scene, out=rgba)
-            rgba.flush()
 
         # One thread per worker and one for its glshade calls: the cluster uses as many cores
         # as it has workers, and the local call all of them.

@@ -90,7 +90,7 @@ def _parser() -> argparse.ArgumentParser:
         "--vertices", type=_positive, default=100_000_000, help="float32 vertices (default 10^8)"
     )
     cluster.add_argument(
-        "--chunk", type=_positive, default=500_000, help="rows per task (default 5*10^5)"
+        "--chunk", type=_positive, default=2_000_000, help="rows per task (default 2*10^6)"
     )
     cluster.add_argument("--workers", type=_positive, default=2, help="processes (default 2)")
     cluster.add_argument(
