@@ -1019,3 +1019,33 @@ def test_random_arguments_raise_only_documented_exceptions() -> None:
     assert "UNEXPECTED" not in out, out
     total = int(out.split()[0])
     assert total == 600 * 13
+
+
+def _records() -> list[Any]:
+    scene = OBJECTS[-1]
+    image = RNG.uniform(size=(6, 5, 4))
+    other = image.copy()
+    other[2, 3] += 0.5
+    return [
+        gs.glsl.compute_shader(scene),
+        gs.glsl.raster_shaders(scene, "gouraud"),
+        gs.glsl.raster_shaders(MIXED, "flat").plan,
+        gs.compare(image, other),
+        gs.compare(image, image),
+    ]
+
+
+@pytest.mark.parametrize("record", _records(), ids=lambda r: type(r).__name__)
+def test_records_pickle_and_deepcopy_to_equal_records(record: Any) -> None:
+    for clone in (pickle.loads(pickle.dumps(record)), copy.deepcopy(record)):
+        assert type(clone) is type(record) and clone == record
+    if isinstance(record, gs.glsl.Shaders):
+        clone = pickle.loads(pickle.dumps(record))
+        with pytest.raises(TypeError):
+            clone.uniforms["gs_x"] = np.zeros(1)  # type: ignore[index]  # still read-only
+
+
+def test_records_differ_when_their_values_do() -> None:
+    shaders, raster, _, differing, identical = _records()
+    assert shaders != raster and differing != identical
+    assert shaders == gs.glsl.compute_shader(OBJECTS[-1])

@@ -315,3 +315,15 @@ def test_the_cluster_bench_runs_and_finds_the_outputs_bit_identical(
     assert saved["settings"] == {"vertices": 300_000, "chunk": 70_000, "workers": 2, "repeat": 1}
     assert "cpu" in saved["machine"]
     assert list(tmp_path.iterdir()) == [path]  # the scratch files are gone
+
+
+def test_gs_shade_given_dask_arrays_is_lazy_and_refuses_out(gsd: Any) -> None:
+    lazy = gs.shade(chunked(P64.astype(np.float32), 300), np.float32([0, 0.6, 0.8]), TWO_SIDED)
+    assert type(lazy).__module__.startswith("dask") and lazy.shape == (4, 1000, 4)
+    assert lazy.dtype == np.float32 and lazy.chunks[1] == (300, 300, 300, 100)
+    expected = gs.shade(P64.astype(np.float32), np.float32([0, 0.6, 0.8]), TWO_SIDED)
+    np.testing.assert_array_equal(lazy.compute(scheduler="sync"), expected)
+    with pytest.raises(TypeError, match="out="):
+        gs.shade(chunked(P64, 300), N64, SCENE, out=np.zeros((1000, 4)))
+    with pytest.raises(ValueError, match="accuracy"):
+        gs.shade(P64, chunked(N64, 300), SCENE, accuracy="low")

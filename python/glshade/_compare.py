@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._intake import array, number
+from ._records import ValueRecord
 from ._render import Image
 
 __all__ = ["Comparison", "compare"]
@@ -36,7 +37,7 @@ _MARKS = {
 
 
 @dataclass(frozen=True, eq=False)
-class Comparison:
+class Comparison(ValueRecord):
     """What `compare` found. Errors are absolute, per channel, on the [0, 1] scale, over the
     pixels both images cover (`compared` of them).
 

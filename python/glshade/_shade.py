@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Literal
+from typing import Literal, cast
 
 from numpy.typing import ArrayLike
 
@@ -78,7 +78,7 @@ def shade(
 
     Returns
     -------
-    (..., 4) or (k, ..., 4) ndarray of the computation dtype
+    (..., 4) or (k, ..., 4) ndarray of the computation dtype (a dask array for dask inputs)
         RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` the
         result has a leading axis of the ``k`` colours named by ``scene.outputs`` (front and
         back; primary and secondary; or all four). A vertex whose position, normal or colour
@@ -86,6 +86,9 @@ def shade(
 
     Notes
     -----
+    When `positions`, `normals` or `colors` is a dask array, the call is `glshade.dask.shade`:
+    lazy, one task per chunk of rows, and ``out`` is refused.
+
     The computation runs in float32 when `positions` and `normals` are float32 (or float16)
     and in float64 otherwise (float64, integers, bools, Python sequences); any memory layout
     is accepted (see the README's intake table). Vertices are shaded in parallel with the GIL
@@ -113,6 +116,20 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    if any(_is_dask(x) for x in (positions, normals, colors)):
+        from . import dask
+
+        if out is not None:
+            raise TypeError(
+                "out= cannot take a lazy result: store a dask result with "
+                "glshade.dask.to_npy or dask.array.store"
+            )
+        lazy = dask.shade(
+            positions, normals, scene, colors=colors, modelview=modelview, normalize=normalize,
+            rescale_normal=rescale_normal, color_material=color_material,
+            color_material_face=color_material_face, accuracy=accuracy, strict=strict,
+        )  # fmt: skip
+        return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
     p, n, c = vertices(positions, normals, colors)
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
@@ -133,3 +150,8 @@ def shade(
         out,
     )
     return result
+
+
+def _is_dask(x: object) -> bool:
+    """A dask collection, told without importing dask."""
+    return hasattr(x, "__dask_graph__") and type(x).__module__.startswith("dask")

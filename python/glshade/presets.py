@@ -26,6 +26,7 @@ from numpy.typing import ArrayLike
 from ._intake import FloatArray
 from ._normals import Weighting
 from ._params import real_array, rgb, scalar, vector3
+from ._records import ValueRecord
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 from ._shade_mesh import shade_mesh
@@ -36,7 +37,7 @@ _BLACK = (0.0, 0.0, 0.0, 1.0)
 
 
 @dataclass(frozen=True, eq=False)
-class Preset:
+class Preset(ValueRecord):
     """A lighting model as glshade state.
 
     Presets pickle and deepcopy to equal presets, and compare equal when their scenes are equal
@@ -56,21 +57,6 @@ class Preset:
     def __post_init__(self) -> None:
         # A read-only view of a private copy: the caller's dict cannot change the preset.
         object.__setattr__(self, "shade_kwargs", MappingProxyType(dict(self.shade_kwargs)))
-
-    def __reduce__(self) -> tuple[type[Preset], tuple[Scene, dict[str, Any]]]:
-        return (Preset, (self.scene, dict(self.shade_kwargs)))
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Preset):
-            return NotImplemented
-        mine, theirs = self.shade_kwargs, other.shade_kwargs
-        return (
-            self.scene == other.scene
-            and mine.keys() == theirs.keys()
-            and all(np.array_equal(mine[k], theirs[k]) for k in mine)
-        )
-
-    __hash__ = None  # type: ignore[assignment]  # equal by value, and mutable inside (arrays)
 
     def shade(self, positions: ArrayLike, normals: ArrayLike, **extra: Any) -> FloatArray:
         """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``."""

@@ -11,6 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._intake import integer, rows, vertices
+from .._records import ValueRecord
 from .._render import Image
 from .._render_input import render_input
 from .._scene import Scene, _rgba
@@ -147,8 +148,8 @@ def shade(
     return shaped[0] if planes == 1 else shaped
 
 
-@dataclass
-class Targets:
+@dataclass(eq=False)
+class Targets(ValueRecord):
     """Float32 images of `rasterize`, row 0 at the top: pixel (row r, column c) has its centre
     at window coordinates (c + 0.5, height - r - 0.5).
 

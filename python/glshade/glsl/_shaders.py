@@ -12,6 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._intake import choice
+from .._records import ValueRecord
 from .._scene import Scene
 from . import _source
 from ._plan import Plan, make_plan
@@ -21,7 +22,7 @@ Shading = Literal["phong", "gouraud", "flat"]
 
 
 @dataclass(frozen=True, eq=False)
-class Shaders:
+class Shaders(ValueRecord):
     """GLSL for one scene, specialised like the CPU kernel, and the uniform values to bind.
 
     Attributes
@@ -68,6 +69,11 @@ class Shaders:
     types: Mapping[str, str]
     outputs: tuple[str, ...]
     plan: Plan = field(repr=False)
+
+    def __post_init__(self) -> None:
+        # Read-only views, also after unpickling (which hands the mappings over as dicts).
+        for name in ("uniforms", "types"):
+            object.__setattr__(self, name, MappingProxyType(dict(getattr(self, name))))
 
     @property
     def sources(self) -> dict[str, str]:
