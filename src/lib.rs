@@ -26,6 +26,7 @@ mod alloc;
 mod camera;
 mod clip;
 mod dispatch;
+mod display;
 mod elementary;
 mod error;
 mod float;
@@ -56,6 +57,7 @@ mod shade;
 #[cfg(test)]
 mod specialisation_tests;
 mod stop;
+mod stream;
 mod triangle;
 mod visibility;
 
