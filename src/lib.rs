@@ -57,6 +57,8 @@ mod shade;
 #[cfg(test)]
 mod specialisation_tests;
 mod stop;
+// The streaming floor of `bench shade`, called from Python only.
+#[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
 mod triangle;
 mod visibility;

@@ -111,7 +111,8 @@ def test_one_row_per_class_dtype_mode_and_instruction_set(small: tuple[gs.Report
     isas = sorted({r.isa for r in result.rows})
     assert "baseline" in isas and set(isas) <= {"avx512", "avx2", "baseline"}
     keys = [(r.scene, r.dtype, r.accuracy, r.isa) for r in result.rows]
-    assert len(set(keys)) == len(keys) == len(CLASSES) * 4 * len(isas)
+    # Two dtypes, three modes ("fast", "exact", "display").
+    assert len(set(keys)) == len(keys) == len(CLASSES) * 6 * len(isas)
     assert {r.kind for r in result.rows} == {"typical", "stiff"}
     m = result.machine
     assert m["instruction_set"] in isas and m["glshade"] == gs.__version__
