@@ -15,6 +15,9 @@
 //! 2^[`normal_exponent`] with their direction kept ([`Kernel::block`]), so a finite normal of
 //! any magnitude, under any normal matrix, lights finitely.
 
+use std::marker::PhantomData;
+
+use crate::elementary::{Full, Tier};
 use crate::float::Float;
 use crate::lanes::{
     normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
@@ -122,6 +125,58 @@ fn widen<V: Lanes>(v: V3<V>) -> [V::Wide; 3] {
     [v.x.widen(), v.y.widen(), v.z.widen()]
 }
 
+/// A running RGB sum of light terms: in the lanes' own type ([`V3`]) or widened to `f64`
+/// ([`Widened`]).
+trait Accumulator<V: Lanes>: Copy {
+    /// The empty sum.
+    fn zero() -> Self;
+    /// The sum with `term` added.
+    #[must_use]
+    fn add(self, term: V3<V>) -> Self;
+    /// The sum in the lanes' type.
+    fn total(self) -> V3<V>;
+}
+
+impl<V: Lanes> Accumulator<V> for V3<V> {
+    #[inline(always)]
+    fn zero() -> Self {
+        V3::zero()
+    }
+    #[inline(always)]
+    fn add(self, term: V3<V>) -> Self {
+        self + term
+    }
+    #[inline(always)]
+    fn total(self) -> V3<V> {
+        self
+    }
+}
+
+/// An `f32` sum kept in `f64`: each term is added exactly up to 2^-53 of the total, so the
+/// rounded total is within 1 ulp of the correctly rounded sum whatever the order of the lights.
+#[derive(Clone, Copy)]
+struct Widened<V: Lanes>([V::Wide; 3]);
+
+impl<V: Lanes> Accumulator<V> for Widened<V> {
+    #[inline(always)]
+    fn zero() -> Self {
+        Self(widen(V3::<V>::zero()))
+    }
+    #[inline(always)]
+    fn add(self, term: V3<V>) -> Self {
+        let [x, y, z] = widen(term);
+        Self([self.0[0] + x, self.0[1] + y, self.0[2] + z])
+    }
+    #[inline(always)]
+    fn total(self) -> V3<V> {
+        V3 {
+            x: V::narrow(self.0[0]),
+            y: V::narrow(self.0[1]),
+            z: V::narrow(self.0[2]),
+        }
+    }
+}
+
 /// The compensated sum `total + error` of [`widen`]ed sums, rounded back.
 #[inline(always)]
 fn narrow<V: Lanes>(total: [V::Wide; 3], error: [V::Wide; 3]) -> V3<V> {
@@ -191,15 +246,29 @@ fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask) -> [V; 4] {
     ]
 }
 
-/// A prepared scene and its plan: the kernel of one `shade` call.
-pub struct Kernel<'a, T: Real> {
+/// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
+/// elementary functions of tier `F`.
+pub struct Kernel<'a, T: Real, F: Tier = Full> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,
     /// Which terms to compute.
     pub plan: &'a Plan,
+    /// The tier.
+    pub tier: PhantomData<F>,
 }
 
-impl<T: Real> Kernel<'_, T> {
+impl<'a, T: Real, F: Tier> Kernel<'a, T, F> {
+    /// The kernel of `prepared` and `plan` in tier `F`.
+    pub fn new(prepared: &'a Prepared<T>, plan: &'a Plan) -> Self {
+        Self {
+            prepared,
+            plan,
+            tier: PhantomData,
+        }
+    }
+}
+
+impl<T: Real, F: Tier> Kernel<'_, T, F> {
     /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i (finite: at most
     /// 1/`MIN_POSITIVE`).
     #[inline(always)]
@@ -222,7 +291,7 @@ impl<T: Real> Kernel<'_, T> {
                     V::splat(T::ONE)
                 };
                 let w = match spot {
-                    Some(s) => att * spot_factor(&s, -vp),
+                    Some(s) => att * spot_factor::<V, F>(&s, -vp),
                     None => att,
                 };
                 (vp, w)
@@ -256,10 +325,10 @@ impl<T: Real> Kernel<'_, T> {
                         return V::splat(T::ZERO);
                     }
                     let h = V3::splat(h);
-                    return cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
+                    return cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
                 }
                 let h = normalize_or_zero_fast(vp + view);
-                let power = cos_pow(side.unit.dot(h), side.unit, h, s, &side.scale);
+                let power = cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
                 power.or_zero(!h.is_zero())
             }
             Specular::Phong => {
@@ -271,7 +340,7 @@ impl<T: Real> Kernel<'_, T> {
                 } else {
                     Scale::of(r, r_length)
                 };
-                let power = cos_pow(r_unit.dot(view), r_unit, view, s, &scale);
+                let power = cos_pow::<V, F>(r_unit.dot(view), r_unit, view, s, &scale);
                 power.or_zero(!(zero | view.is_zero()))
             }
         }
@@ -308,7 +377,7 @@ impl<T: Real> Kernel<'_, T> {
     /// `side` (0 front, 1 back, whose normal `normal` is already negated): ambient, diffuse
     /// and specular.
     #[inline(always)]
-    fn sums<V: Lanes<T = T>>(
+    fn sums<V: Lanes<T = T>, A: Accumulator<V>>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
@@ -321,19 +390,19 @@ impl<T: Real> Kernel<'_, T> {
         let zero = V::splat(T::ZERO);
         let side_plan = &plan.sides[side];
         let s = prepared.materials[side].shininess;
-        let [mut ambient, mut diffuse, mut specular] = [V3::<V>::zero(); 3];
+        let [mut ambient, mut diffuse, mut specular] = [A::zero(); 3];
         for (light, lp) in lights.iter().zip(&plan.lights[first..]) {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if lp.ambient {
                 let weight = w.min(V::splat(T::SATURATION));
-                ambient = ambient + V3::splat(light.ambient).scale(weight);
+                ambient = ambient.add(V3::splat(light.ambient).scale(weight));
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
-                diffuse = diffuse + V3::splat(light.diffuse).scale(weight);
+                diffuse = diffuse.add(V3::splat(light.diffuse).scale(weight));
             }
             if lp.specular && side_plan.specular {
                 let power = if side_plan.power {
@@ -349,15 +418,18 @@ impl<T: Real> Kernel<'_, T> {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
                 let weight = weight(w, power).or_zero(gate);
-                specular = specular + V3::splat(light.specular).scale(weight);
+                specular = specular.add(V3::splat(light.specular).scale(weight));
             }
         }
-        [ambient, diffuse, specular]
+        [ambient.total(), diffuse.total(), specular.total()]
     }
 
-    /// The light sums of every light: in `T` for up to [`Float::SUM_BLOCK`] lights; beyond, in
-    /// blocks of that many, added in `f64` with their rounding errors kept apart, so the error
-    /// is `SUM_BLOCK` ulp of Σ|terms| whatever the light count. Saturated.
+    /// The light sums of every light, saturated: in `T` for up to [`Float::SUM_BLOCK`] lights
+    /// (within ½ ulp of Σ|terms| per light). Beyond, in `f32` every term is added in `f64` and
+    /// the total rounded once, within 1 ulp of the correctly rounded sum whatever the order of
+    /// the lights (a sum of blocks in `f32` loses the small terms that share a block with a
+    /// large one); in `f64`, blocks of that many are added with their rounding errors kept
+    /// apart, so the error is `SUM_BLOCK` ulp of Σ|terms| whatever the light count.
     #[inline(always)]
     fn all_sums<V: Lanes<T = T>>(
         &self,
@@ -367,13 +439,16 @@ impl<T: Real> Kernel<'_, T> {
         view: V3<V>,
     ) -> [V3<V>; 3] {
         let lights = &self.prepared.lights;
+        let narrow_type = std::mem::size_of::<T>() < std::mem::size_of::<f64>();
         let sums = if lights.len() <= T::SUM_BLOCK {
-            self.sums(lights, 0, p, normal, side, view)
+            self.sums::<V, V3<V>>(lights, 0, p, normal, side, view)
+        } else if narrow_type {
+            self.sums::<V, Widened<V>>(lights, 0, p, normal, side, view)
         } else {
             let zero = V::splat(T::ZERO).widen();
             let (mut total, mut error) = ([[zero; 3]; 3], [[zero; 3]; 3]);
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums(chunk, b * T::SUM_BLOCK, p, normal, side, view);
+                let part = self.sums::<V, V3<V>>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
                 for ((t, e), x) in total.iter_mut().zip(&mut error).zip(part) {
                     let x = widen(x);
                     for k in 0..3 {

@@ -26,6 +26,7 @@ mod alloc;
 mod camera;
 mod clip;
 mod dispatch;
+mod display;
 mod elementary;
 mod error;
 mod float;
@@ -56,6 +57,9 @@ mod shade;
 #[cfg(test)]
 mod specialisation_tests;
 mod stop;
+// The streaming floor of `bench shade`, called from Python only.
+#[cfg_attr(not(feature = "python"), allow(dead_code))]
+mod stream;
 mod triangle;
 mod visibility;
 

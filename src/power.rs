@@ -4,7 +4,7 @@
 
 use std::ops::{Add, Sub};
 
-use crate::elementary::ElementaryLanes;
+use crate::elementary::{ElementaryLanes, Tier};
 use crate::float::Float;
 use crate::lanes::{LaneMask, Lanes, V3};
 
@@ -103,13 +103,20 @@ pub fn length_minus_one<V: Lanes>(v: V3<V>, length: V) -> (V, V::Mask) {
     (m1, near)
 }
 
-/// `(scale.length · max(â·b̂, 0))^s` for unit `a`, `b` whose dot product is `cos`, with 0^0 = 1.
+/// `(scale.length · max(â·b̂, 0))^s` for unit `a`, `b` whose dot product is `cos`, with 0^0 = 1,
+/// with the elementary functions of tier `F`.
 ///
 /// 1 − â·b̂ is taken as x = |â − b̂|²/2, which has no cancellation near the highlight, and the
 /// power as `exp(s·ln(1 − x))`: the error stays a few ulp at any exponent instead of growing as
 /// s·ulp. The length of the vector `a` stands for enters through `scale` (see [`Scale`]).
 #[inline(always)]
-pub fn cos_pow<V: ElementaryLanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) -> V {
+pub fn cos_pow<V: ElementaryLanes, F: Tier>(
+    cos: V,
+    a: V3<V>,
+    b: V3<V>,
+    s: V::T,
+    scale: &Scale<V>,
+) -> V {
     if s == V::T::ZERO {
         return V::splat(V::T::ONE);
     }
@@ -120,24 +127,25 @@ pub fn cos_pow<V: ElementaryLanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &
     // y > −1: the base is positive (not rounded to 0, where ln would be −inf).
     let zero = V::splat(V::T::ZERO);
     let valid = cos.gt(zero) & x.lt(V::splat(V::T::ONE)) & y.gt(V::splat(-V::T::ONE));
-    let ln = y.ln_1p() + V::select(scale.near, zero, scale.ln);
-    let power = (V::splat(s) * ln).exp();
+    let ln = F::ln_1p(y) + V::select(scale.near, zero, scale.ln);
+    let power = F::exp(V::splat(s) * ln);
     power.min(V::splat(V::T::MAX)).or_zero(valid)
 }
 
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
 /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
 #[inline(always)]
-pub fn spot_factor<V: ElementaryLanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
+pub fn spot_factor<V: ElementaryLanes, F: Tier>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
     let axis = V3::splat(spot.direction);
     let c = to_vertex.dot(axis).max(V::splat(V::T::ZERO));
     let inside = c.ge(V::splat(spot.cos_cutoff));
-    cos_pow(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
+    cos_pow::<V, F>(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::elementary::Full;
     use crate::lanes::{normalize_and_length, Pack};
 
     type One = Pack<f32, 1>;
@@ -147,7 +155,7 @@ mod tests {
     }
 
     fn pow1(cos: f32, a: [f32; 3], b: [f32; 3], s: f32) -> f32 {
-        cos_pow(Pack([cos]), one(a), one(b), s, &Scale::unit()).0[0]
+        cos_pow::<_, Full>(Pack([cos]), one(a), one(b), s, &Scale::unit()).0[0]
     }
 
     #[test]
@@ -196,7 +204,7 @@ mod tests {
             let scale = Scale::of(v1, len);
             assert!(!scale.near.0[0]);
             let h = V3::splat([0.0, 0.0, 1.0]);
-            let got = f64::from(cos_pow(unit.dot(h), unit, h, s, &scale).0[0]);
+            let got = f64::from(cos_pow::<_, Full>(unit.dot(h), unit, h, s, &scale).0[0]);
             let exact = f64::from(v[2]).powf(f64::from(s));
             assert!((got / exact - 1.0).abs() < 1e-6, "{got} vs {exact}");
         }

@@ -4,6 +4,7 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
+use crate::elementary::Full;
 use crate::error::Error;
 use crate::float::{exponent, ldexp};
 use crate::lanes::{Lanes, Scalar, V3};
@@ -288,10 +289,13 @@ pub enum Accuracy {
     Fast,
     /// `f64` throughout, whatever the input; `f32` results are rounded once at the end.
     Exact,
+    /// The input's precision with cheaper `exp` and `ln` ([`crate::display`]): every output
+    /// within 2^-10 of the exact value, a quarter of an 8-bit step.
+    Display,
 }
 
 impl Accuracy {
-    /// Parses `"fast"` or `"exact"`.
+    /// Parses `"fast"`, `"exact"` or `"display"`.
     ///
     /// # Errors
     /// A value error naming `accuracy` for any other string.
@@ -299,8 +303,9 @@ impl Accuracy {
         match name {
             "fast" => Ok(Self::Fast),
             "exact" => Ok(Self::Exact),
+            "display" => Ok(Self::Display),
             _ => Err(Error::value(format!(
-                "accuracy must be 'fast' or 'exact', got '{name}'"
+                "accuracy must be 'fast', 'exact' or 'display', got '{name}'"
             ))),
         }
     }
@@ -348,6 +353,8 @@ pub struct Prepared<T: Real> {
     pub specular: Specular,
     /// f_i of eq. 2.2 on (GL) or off (learnopengl); see [`Scene::specular_gate`].
     pub specular_gate: bool,
+    /// The accuracy mode (`Display`: the kernel's powers use [`crate::display::Display`]).
+    pub accuracy: Accuracy,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,
 }
@@ -404,7 +411,7 @@ fn prepare_light<T: Real>(
         let vp = cast::<T>(vp);
         let spot = spot.map_or(T::ONE, |s| {
             let to_vertex = -V3::<T::Vector<Scalar>>::splat(vp);
-            spot_factor(&s, to_vertex).lane(0)
+            spot_factor::<_, Full>(&s, to_vertex).lane(0)
         });
         Source::Directional { vp, halfway, spot }
     } else {
@@ -479,6 +486,7 @@ impl<T: Real> Prepared<T> {
             separate_specular: scene.separate_specular,
             specular: scene.specular,
             specular_gate: scene.specular_gate,
+            accuracy: options.accuracy,
             color_material: options.color_material,
         })
     }
@@ -511,13 +519,19 @@ mod tests {
         };
         assert_eq!(spot.cos_cutoff, 0.0);
         // Perpendicular to the axis: on the edge, inside, 0^0 = 1.
-        assert_eq!(spot_factor(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
+        assert_eq!(spot_factor::<_, Full>(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
         let sharp = Spot {
             exponent: 2.0,
             ..spot
         };
-        assert_eq!(spot_factor(&sharp, one([1.0, 0.0, 0.0])).0, [0.0]);
-        assert_eq!(spot_factor(&sharp, one([0.0, 0.0, -1.0])).0, [1.0]);
+        assert_eq!(
+            spot_factor::<_, Full>(&sharp, one([1.0, 0.0, 0.0])).0,
+            [0.0]
+        );
+        assert_eq!(
+            spot_factor::<_, Full>(&sharp, one([0.0, 0.0, -1.0])).0,
+            [1.0]
+        );
     }
 
     #[test]

@@ -12,7 +12,7 @@ use crate::dispatch::Isa;
 use crate::light::Light;
 use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::plan::Plan;
-use crate::prepare::{Prepared, ShadeOptions};
+use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run, VertexColors};
@@ -168,9 +168,11 @@ fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
     )
 }
 
-/// The output bits of `plan` (new or general) on `isa`.
-fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
-    let (scene, options) = scene_of(bits);
+/// The output bits of `plan` (new or general) on `isa` in mode `accuracy` (`Fast` or
+/// `Display`: the kernel's own arithmetic).
+fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa, accuracy: Accuracy) -> Vec<u64> {
+    let (scene, mut options) = scene_of(bits);
+    options.accuracy = accuracy;
     let scene = scene.validated().unwrap();
     let (positions, normals, colors) = vertices::<T>();
     let prepared = Prepared::<T>::new(&scene, &options).unwrap();
@@ -200,17 +202,19 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
 
 fn check_every_subset<T: Real>() {
     let isas: Vec<Isa> = Isa::ALL.into_iter().filter(|i| i.supported()).collect();
-    for bits in 0..1 << FEATURES {
-        let reference = shade_bits::<T>(bits, true, Isa::Baseline);
-        for &isa in &isas {
-            for general in [false, true] {
-                assert!(
-                    shade_bits::<T>(bits, general, isa) == reference,
-                    "features {bits:#016b}: plan {} on {} differs from the general plan on \
-                     baseline",
-                    if general { "general" } else { "new" },
-                    isa.name(),
-                );
+    for accuracy in [Accuracy::Fast, Accuracy::Display] {
+        for bits in 0..1 << FEATURES {
+            let reference = shade_bits::<T>(bits, true, Isa::Baseline, accuracy);
+            for &isa in &isas {
+                for general in [false, true] {
+                    assert!(
+                        shade_bits::<T>(bits, general, isa, accuracy) == reference,
+                        "features {bits:#016b}, {accuracy:?}: plan {} on {} differs from the \
+                         general plan on baseline",
+                        if general { "general" } else { "new" },
+                        isa.name(),
+                    );
+                }
             }
         }
     }

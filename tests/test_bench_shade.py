@@ -11,7 +11,9 @@ from conftest import require
 
 import glshade as gs
 from glshade import __main__ as cli
+from glshade import _glshade
 from glshade._tools.baselines import numba_shade, numpy_shade
+from glshade._tools.machine import machine
 from glshade._tools.scenes import bench_scenes, bench_vertices
 from glshade._tools.timing import Timing, ratio, time_rounds
 
@@ -66,6 +68,9 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json(
     for name in SCENES:
         assert f"\n{name}: fast: float32" in out
     assert "per-call overhead" in out and f"wrote {path}" in out
+    cpu = machine()
+    assert f"CPU: {cpu['cpu']}; glshade's instruction set: {cpu['instruction_set']}" in out
+    assert "of stream" in out and "display" in out and "f64 exact" in out
     saved = json.loads(path.read_text())
     assert saved["bench"] == "shade" and saved["settings"]["sizes"] == [100, 200]
     assert {"cpu", "instruction_set", "threads", "glshade", "numpy", "python"} <= set(
@@ -83,6 +88,18 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json(
             b / o for b, o in zip(r["ms"]["numpy"]["rounds"], glshade["rounds"], strict=True)
         ]
         assert r["speedup"]["numpy"]["median"] == pytest.approx(np.median(per_round))
+        assert {"stream", "display", "exact64"} <= set(r["ms"])
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+def test_the_streaming_floor_reads_and_writes_what_shade_does(dtype: type) -> None:
+    p, n = (a.astype(dtype) for a in bench_vertices(1_000))
+    for read in (False, True):
+        got = _glshade.stream(p, n, read)
+        assert got.shape == (1_000, 4) and got.dtype == dtype
+        np.testing.assert_array_equal(got[:, :3], n)
+        w = (p[:, 0] + p[:, 1]) + p[:, 2] if read else np.ones(1_000, dtype)
+        np.testing.assert_array_equal(got[:, 3], w)
 
 
 @pytest.mark.parametrize(

@@ -234,7 +234,7 @@ scene = gs.Scene(lights, material=gs.Material(specular=(0.5, 0.5, 0.5), shinines
                  viewer=(0, 0, 0, 1), two_side=True)
 digest = hashlib.sha256()
 for dtype in (np.float32, np.float64):
-    for accuracy in ("fast", "exact"):
+    for accuracy in ("fast", "exact", "display"):
         digest.update(gs.shade(p.astype(dtype), nrm.astype(dtype), scene, accuracy=accuracy))
 print(digest.hexdigest())
 """

@@ -18,6 +18,7 @@ __all__ = [
     "perspective",
     "render",
     "shade",
+    "stream",
     "vertex_normals",
 ]
 
@@ -76,6 +77,11 @@ def shade(
     accuracy: str,
     strict: bool,
     out: NDArray[np.floating[Any]] | None,
+) -> NDArray[np.floating[Any]]: ...
+def stream(
+    positions: NDArray[np.floating[Any]],
+    normals: NDArray[np.floating[Any]],
+    read_positions: bool,
 ) -> NDArray[np.floating[Any]]: ...
 def describe(
     scene: Scene,

@@ -415,7 +415,7 @@ class Scene:
         rescale_normal: bool = False,
         color_material: str | None = None,
         color_material_face: str = "front_and_back",
-        accuracy: Literal["fast", "exact"] = "fast",
+        accuracy: Literal["fast", "exact", "display"] = "fast",
         strict: bool = False,
     ) -> str:
         """What `shade` computes for this scene, in one line.

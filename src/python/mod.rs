@@ -52,7 +52,7 @@ mod _glshade {
     #[pymodule_export]
     use super::scene::{Lights, Material, Scene};
     #[pymodule_export]
-    use super::shading::{describe, shade};
+    use super::shading::{describe, shade, stream};
 
     use pyo3::prelude::*;
 

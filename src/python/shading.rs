@@ -168,3 +168,39 @@ pub fn describe(
     }
     .map_err(to_pyerr)
 }
+
+fn stream_typed<'py, T: Element + Real>(
+    py: Python<'py>,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    read_positions: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let positions = read::<T>(positions, "positions")?;
+    let normals = read::<T>(normals, "normals")?;
+    let (p, n) = (
+        rows::<T, 3>(&positions, "positions")?,
+        rows::<T, 3>(&normals, "normals")?,
+    );
+    let array = filled::<T>(py, &[n.len(), 4], |dst| {
+        run(py, false, |stop| {
+            crate::stream::stream(p, n, read_positions, dst, stop)
+        })
+    })?;
+    Ok(array.into_any())
+}
+
+/// The streaming floor of `shade` (for `bench shade`): a new (n, 4) array written with the
+/// same tasks, reads and stores as `shade` on C-contiguous (n, 3) float32 or float64
+/// `normals` (and `positions` when `read_positions`), and no lighting: RGBA = (n, Σp or 1).
+#[pyfunction]
+pub fn stream<'py>(
+    py: Python<'py>,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    read_positions: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    match float_of(normals, "normals")? {
+        Float::F32 => stream_typed::<f32>(py, positions, normals, read_positions),
+        Float::F64 => stream_typed::<f64>(py, positions, normals, read_positions),
+    }
+}

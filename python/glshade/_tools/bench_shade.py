@@ -1,5 +1,6 @@
 """``python -m glshade bench shade``: `gs.shade` beside the numpy and numba baselines
-(`baselines`) on the benchmark's scenes, timed in the same rounds."""
+(`baselines`) and the streaming floor (the same reads and writes with no arithmetic) on the
+benchmark's scenes, with the display tier and float64 exact mode, timed in the same rounds."""
 
 from __future__ import annotations
 
@@ -10,7 +11,10 @@ import time
 from collections.abc import Callable
 from typing import Any
 
+import numpy as np
+
 import glshade as gs
+from glshade import _glshade
 
 from .baselines import numba_shade, numpy_shade
 from .bench import save
@@ -55,10 +59,14 @@ def wake_cost(n: int = 1_000_000, repeat: int = 7) -> tuple[float, float]:
 
 def bench_shade(sizes: tuple[int, ...], repeat: int, json_path: str | None = None) -> int:
     """Prints (and saves at `json_path`), for every scene and size, the median million vertices
-    per second of glshade, numpy and numba, and glshade's speed-up over each (the median of
-    per-round ratios)."""
+    per second of glshade, numpy and numba, glshade's speed-up over each, its fraction of the
+    streaming floor (`_glshade.stream`: the same tasks, reads, transposes and fresh result,
+    no lighting), the display tier's speed-up over "fast" and float64 "exact" mode's time over
+    float32 "fast" (all medians of per-round ratios)."""
     numba = numba_shade()
-    print(describe(machine()))
+    m = machine()
+    print(describe(m))
+    print(f"CPU: {m['cpu']}; glshade's instruction set: {m['instruction_set']}")
     print(
         f"float32, a new (n, 4) array per call; {repeat} rounds; in each round every method "
         f"runs {BURST} times in a row and its fastest call counts"
@@ -97,25 +105,36 @@ def bench_shade(sizes: tuple[int, ...], repeat: int, json_path: str | None = Non
     for name, scene in bench_scenes().items():
         print(f"\n{name}: {scene.plan()}")
         print(
-            f"  {'vertices':>10} {'glshade':>9} {'numpy':>9} {'numba':>9}"
-            f"   {'x numpy':>8} {'x numba':>8}   (million vertices/s, medians)"
+            f"  {'vertices':>10} {'glshade':>9} {'numpy':>9} {'numba':>9} {'stream':>9}"
+            f"   {'x numpy':>8} {'x numba':>8} {'of stream':>9} {'display':>8} {'f64 exact':>9}"
+            "   (million vertices/s; ratios: medians of per-round ratios)"
         )
+        reads_positions = "reads positions" in scene.plan()
         for n in sizes:
             p, normals = bench_vertices(n)
+            p64, normals64 = p.astype(np.float64), normals.astype(np.float64)
             methods: dict[str, Callable[[], Any]] = {
                 "glshade": functools.partial(gs.shade, p, normals, scene),
+                "stream": functools.partial(_glshade.stream, p, normals, reads_positions),
+                "display": functools.partial(gs.shade, p, normals, scene, accuracy="display"),
+                "exact64": functools.partial(gs.shade, p64, normals64, scene, accuracy="exact"),
                 "numpy": functools.partial(numpy_shade, p, normals, scene),
             }
             if not isinstance(numba, str):
                 methods["numba"] = functools.partial(numba, p, normals, scene)
             times = time_rounds(methods, repeat, burst=BURST)
             rate = {k: n / t.median / 1e6 for k, t in times.items()}
+            # Per-round ratios: other / glshade, so the stream's is glshade's fraction of the
+            # floor, display's its speed-up over fast, and exact64's its time over fast.
             speedup = {k: ratio(times[k], times["glshade"]) for k in times if k != "glshade"}
             cells = [f"{speedup[k].median:7.1f}x" if k in speedup else f"{'-':>8}" for k in
                      ("numpy", "numba")]  # fmt: skip
+            display = 1.0 / speedup["display"].median
+            exact = 1.0 / speedup["exact64"].median
             print(
                 f"  {n:>10,} {rate['glshade']:9.1f} {rate['numpy']:9.1f} "
-                f"{rate.get('numba', float('nan')):9.1f}   {cells[0]} {cells[1]}"
+                f"{rate.get('numba', float('nan')):9.1f} {rate['stream']:9.1f}   {cells[0]} "
+                f"{cells[1]} {speedup['stream'].median:9.2f} {display:7.2f}x {exact:8.2f}x"
             )
             results["scenes"].append(
                 {

@@ -41,8 +41,8 @@ def _pareto(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
 
 def error_time(report: Report) -> Figure:
     """Max error (log) against time per vertex (log), one panel per dtype: one point per row,
-    coloured by scene class, shaped by instruction set, filled for "fast" and hollow for
-    "exact"; each panel's Pareto front."""
+    coloured by scene class, shaped by instruction set, filled for "fast", hollow for
+    "exact" and half filled for "display"; each panel's Pareto front."""
     classes = list(dict.fromkeys(r.scene for r in report.rows))
     palette = matplotlib.colormaps["tab20"]
     colour = {c: palette(i % 20) for i, c in enumerate(classes)}
@@ -56,7 +56,7 @@ def error_time(report: Report) -> Figure:
             (i, r) for i, r in enumerate(report.rows) if r.dtype == dtype
         ]
         for i, r in rows:
-            fill = colour[r.scene] if r.accuracy == "fast" else "none"
+            fill = "none" if r.accuracy == "exact" else colour[r.scene]
             (point,) = ax.plot(
                 [r.time_ns],
                 [max(r.max_error, floor)],
@@ -64,6 +64,7 @@ def error_time(report: Report) -> Figure:
                 marker=MARKERS.get(r.isa, "D"),
                 markersize=6,
                 markerfacecolor=fill,
+                fillstyle="left" if r.accuracy == "display" else "full",
                 markeredgecolor=colour[r.scene],
             )
             point.set_gid(f"row-{i}")
@@ -96,6 +97,15 @@ def error_time(report: Report) -> Figure:
             markerfacecolor="none",
             linestyle="none",
             label='hollow: "exact"',
+        ),
+        Line2D(
+            [],
+            [],
+            color="0.2",
+            marker="o",
+            fillstyle="left",
+            linestyle="none",
+            label='half: "display"',
         ),
         Line2D([], [], color="0.3", drawstyle="steps-post", label="Pareto front"),
     ]

@@ -27,7 +27,7 @@ from .report import MODES, error_statistics
 from .timing import BURST, time_rounds
 
 
-def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact"]) -> dict[str, Any]:
+def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact", "display"]) -> dict[str, Any]:
     """The error fields of a row: `gs.shade` of the case against its reference."""
     dtype = case["dtype"]
     got = gs.shade(case["positions"], case["normals"], case["model"], accuracy=accuracy)[:, :3]
