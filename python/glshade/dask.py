@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import os
 import string
+import sys
 from pathlib import Path
 from typing import Any, cast
 
@@ -40,6 +41,7 @@ except ImportError as error:  # pragma: no cover - exercised without dask instal
         "glshade.dask needs dask: pip install 'glshade[dask]' (dask[array] and distributed)"
     ) from error
 
+from ._intake import integer
 from ._normals import Weighting, vertex_normals
 from ._scene import Scene
 from ._shade import shade as _shade
@@ -176,10 +178,9 @@ def shade_mesh(
         if faces is None:
             raise TypeError("shade_mesh needs faces (or a mesh with .faces) when normals is None")
         normals = vertex_normals(vertices, faces, weighting=weighting)
-    if not isinstance(chunks, (int, np.integer)) or isinstance(chunks, bool) or chunks < 1:
-        raise ValueError(f"chunks must be a positive int (rows per chunk), got {chunks!r}")
+    rows = integer(chunks, "chunks", 1, sys.maxsize)
     if not isinstance(vertices, da.Array):
-        vertices = da.from_array(np.asarray(vertices), chunks=(int(chunks), -1))
+        vertices = da.from_array(np.asarray(vertices), chunks=(rows, -1))
     if not isinstance(normals, da.Array):
         normals = da.from_array(np.asarray(normals), chunks=vertices.chunks)
     return shade(vertices, normals, scene, **shade_kwargs)
@@ -205,15 +206,14 @@ def from_npy(path: str | os.PathLike[str], chunks: int = 500_000) -> da.Array:
     header = np.load(path, mmap_mode="r")  # reads only the header and maps the file
     shape, dtype = header.shape, header.dtype
     del header
-    if not isinstance(chunks, (int, np.integer)) or isinstance(chunks, bool) or chunks < 1:
-        raise ValueError(f"chunks must be a positive int (rows per chunk), got {chunks!r}")
+    rows = integer(chunks, "chunks", 1, sys.maxsize)
     if len(shape) == 0:
         raise ValueError(f"{path} holds a 0-d array; from_npy chunks along the first axis")
     # A blockwise layer of its own, so that dask fuses each read into the task that uses it.
     return da.map_blocks(
         _read_rows,
         _NpyFile(path, shape, dtype),
-        chunks=da.core.normalize_chunks((int(chunks), *shape[1:]), shape),
+        chunks=da.core.normalize_chunks((rows, *shape[1:]), shape),
         dtype=dtype,
         meta=np.zeros((0,) * len(shape), dtype),
     )

@@ -64,6 +64,10 @@ def context() -> Any:
     return ctx
 
 
+# The functions below take a `context=` argument, which hides this module's `context`.
+_default_context = context
+
+
 def _program(ctx: Any, shaders: Shaders) -> Any:
     """The linked program of `shaders` on `ctx`, compiled once per source."""
     sources = shaders.sources
@@ -118,7 +122,7 @@ def shade(
         color_material=color_material,
         color_material_face=color_material_face,
     )
-    ctx = context if context is not None else globals()["context"]()
+    ctx = context if context is not None else _default_context()
     count = int(np.prod(leading, dtype=np.int64))
     planes = len(shaders.outputs)
     program = _program(ctx, shaders)
@@ -230,7 +234,7 @@ def rasterize(
         convention for flat shading.
     """
     moderngl = _moderngl()
-    ctx = context if context is not None else globals()["context"]()
+    ctx = context if context is not None else _default_context()
     p = rows(positions, "positions").astype(np.float32)
     attributes = np.ones((len(p), 10), np.float32)
     attributes[:, 0:3] = p
