@@ -903,8 +903,8 @@ def test_ctrl_c_interrupts_a_long_call_within_half_a_second(setup: str, call: st
     out = passes(INTERRUPT.format(setup=setup, call=call), timeout=240)
     word, _, seconds = out.strip().partition(" ")
     assert word == "interrupted", out
-    # 14-38 ms on an idle machine; 0.68 s was seen once for vertex_normals during a CI run. The
-    # uninterrupted calls take 10 s or more, so 2 s still shows the call was cut short.
+    # 14-38 ms on an idle machine; 0.68 s was seen once for vertex_normals during a CI run.
+    # "interrupted" already shows the call was cut short; this bounds how late.
     assert float(seconds) < 2.0, out
 
 
