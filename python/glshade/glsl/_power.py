@@ -16,15 +16,6 @@ matters only for a power on normals that are not normalised.
 
 from __future__ import annotations
 
-# `precise` is a keyword from GLSL 4.00; the library is also pasted into 3.30 shaders.
-_PRECISE = [
-    "#if __VERSION__ >= 400",
-    "#define GS_PRECISE precise",
-    "#else",
-    "#define GS_PRECISE",
-    "#endif",
-]
-
 _LOG = """\
 // ln(1 + y) for y in [sqrt(1/2) - 1, sqrt(2) - 1]: 2 atanh(z), z = y / (2 + y) in
 // [-0.1716, 0.1716], by its series to z^11 (the next term is below 1e-10 of the sum).
@@ -106,7 +97,7 @@ GSScale gs_scale(vec3 v) {
     gs_square_exact(v.z, c, ce);
     gs_sum_exact(a, b, ab, e1);
     gs_sum_exact(ab, c, abc, e2);
-    GS_PRECISE float len = min(sqrt(dot(v, v)), 3.40282347e38);
+    GS_PRECISE float len = min(sqrt(gs_dot(v, v)), 3.40282347e38);
     bool near = abc >= 0.5 && abc <= 2.0;
     // abc - 1 is exact (Sterbenz) where near.
     GS_PRECISE float squared_minus_one = (abc - 1.0) + ((e1 + e2) + ((ae + be) + ce));
@@ -122,7 +113,7 @@ float gs_cos_pow(float c, vec3 a, vec3 b, float s, GSScale scale) {
         return 1.0;
     }
     GS_PRECISE vec3 d = a - b;
-    GS_PRECISE float x = 0.5 * dot(d, d);
+    GS_PRECISE float x = 0.5 * gs_dot(d, d);
     GS_PRECISE float y = scale.near ? scale.minus_one - scale.magnitude * x : -x;
     // y > -1: the base is positive (not rounded to 0, whose ln is -inf).
     if (!(c > 0.0 && x < 1.0 && y > -1.0)) {
@@ -141,4 +132,4 @@ def functions(scaled: bool) -> list[str]:
         start = text.index("// x x = p + e exactly")
         end = text.index("// (scale.magnitude max(c, 0))^s")
         text = text[:start] + text[end:]
-    return [*_PRECISE, *text.splitlines()]
+    return text.splitlines()

@@ -32,7 +32,9 @@ class Shaders(ValueRecord):
         of your own: ``GSColor gs_lighting_front(vec3 V, vec3 n, vec4 color)`` (and
         ``gs_lighting_back``, called with ``-n``, with two-sided lighting) light one eye-space
         vertex, returning the clamped primary and secondary colours; ``gs_eye_space`` applies
-        the modelview, ``gs_unit`` and ``gs_pow`` are the selects-only helpers they use.
+        the modelview; ``gs_dot``, ``gs_transform``, ``gs_unit``, ``gs_direction`` and (when a
+        power is needed) ``gs_cos_pow`` are the helpers they use, selects only, and ``precise``
+        from GLSL 4.00 on (the macro ``GS_PRECISE``).
     compute : str or None
         ``#version 430`` compute shader (`compute_shader`): SSBOs of tightly packed float
         positions (binding 0, only when the scene reads them) and normals (binding 1), vec4

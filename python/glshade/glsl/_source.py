@@ -1,10 +1,11 @@
 """GLSL text of a plan: the lighting functions (the "library"), a compute shader (GLSL 430) and a
 vertex + fragment pair (GLSL 330 core) for flat, Gouraud and Phong shading.
 
-The arithmetic is the spec's as written (section 2.14.1), with what GLSL leaves undefined never
-evaluated: pow(0, 0), pow of a negative base, 1/0 and 0/0 are avoided with selects, not with
-multiplications by 0 (which would spread NaN and inf). normalize() and inversesqrt() are not
-used: llvmpipe's reciprocal square root is an approximation refined once.
+The arithmetic is the spec's (section 2.14.1) in the CPU kernel's operations and order, with
+what GLSL leaves undefined never evaluated: 0^0, the power of a negative base, 1/0 and 0/0 are
+avoided with selects, not with multiplications by 0 (which would spread NaN and inf). The powers
+are `_power`'s. normalize() and inversesqrt() are not used: llvmpipe's reciprocal square root is
+an approximation refined once.
 """
 
 from __future__ import annotations
@@ -12,6 +13,16 @@ from __future__ import annotations
 from . import _power
 from ._plan import LightGroup, Plan, Side
 from ._values import SIDE_NAMES
+
+# The library's arithmetic is `precise` (GLSL 4.00 on): as written, neither reassociated nor
+# fused, so it rounds where the CPU kernel does; the library is also pasted into 3.30 shaders.
+_PRECISE = [
+    "#if __VERSION__ >= 400",
+    "#define GS_PRECISE precise",
+    "#else",
+    "#define GS_PRECISE",
+    "#endif",
+]
 
 # The GLSL type of every uniform a plan may declare, by name or by a light group's field.
 _TYPES = {
@@ -86,13 +97,13 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
             body.append(f"float w = {u}spot[i];")
     else:
         body.append(f"vec3 D = {u}point[i] - V;")
-        body.append("float d = sqrt(dot(D, D));")
-        body.append("vec3 VP = d > 0.0 ? D / d : vec3(0.0);")
+        body.append("GS_PRECISE float d = sqrt(gs_dot(D, D));")
+        body.append("GS_PRECISE vec3 VP = d > 0.0 ? D * (1.0 / d) : vec3(0.0);")
         if group.attenuated:
             body.append(f"vec3 k = {u}attenuation[i];")
             body.append("float w = 1.0 / (k.x + k.y * d + k.z * d * d);  // eq. 2.4")
         if group.spot:  # eq. 2.5
-            body.append(f"float c = max(dot(-VP, {u}spot_direction[i]), 0.0);")
+            body.append(f"float c = max(gs_dot(-VP, {u}spot_direction[i]), 0.0);")
             power = (
                 f"gs_cos_pow(c, -VP, {u}spot_direction[i], {u}spot_exponent[i], gs_unit_scale())"
             )
@@ -101,7 +112,7 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
     w = "w * " if weighted else ""
     specular = group.specular and side.specular
     if group.diffuse or specular:
-        body.append("float n_dot_vp = dot(n, VP);")
+        body.append("GS_PRECISE float n_dot_vp = gs_dot(n, VP);")
     if group.ambient:
         body.append(f"c_pri += {w}a_cm.rgb * {u}ambient[i];")
     if group.diffuse:
@@ -110,17 +121,19 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
         power = ""
         if side.power and group.halfway:
             body.append(f"vec3 h = {u}halfway[i];")
-            body.append("float power = gs_cos_pow(dot(n_unit, h), n_unit, h, s_rm, n_scale);")
+            body.append("float power = gs_cos_pow(gs_dot(n_unit, h), n_unit, h, s_rm, n_scale);")
             power = "power * "
         elif side.power and not plan.phong:
-            body.append("vec3 h = gs_unit(VP + VPe);  // eq. 2.3; 0 gives no power")
-            body.append("float power = gs_cos_pow(dot(n_unit, h), n_unit, h, s_rm, n_scale);")
+            body.append("vec3 h = gs_direction(VP + VPe);  // eq. 2.3; 0 gives no power")
+            body.append("float power = gs_cos_pow(gs_dot(n_unit, h), n_unit, h, s_rm, n_scale);")
             power = "power * "
         elif side.power:
-            body.append("vec3 R = 2.0 * n_dot_vp * n - VP;")
-            body.append("vec3 r_unit = gs_unit(R);  // 0 for R = 0: no power, as for VPe = 0")
+            body.append("GS_PRECISE vec3 R = n * (n_dot_vp + n_dot_vp) - VP;")
+            body.append("vec3 r_unit = gs_direction(R);  // 0 for R = 0: no power, as for VPe = 0")
             scale = "gs_unit_scale()" if plan.normalize else "gs_scale(R)"
-            body.append(f"float power = gs_cos_pow(dot(r_unit, VPe), r_unit, VPe, s_rm, {scale});")
+            body.append(
+                f"float power = gs_cos_pow(gs_dot(r_unit, VPe), r_unit, VPe, s_rm, {scale});"
+            )
             power = "power * "
         if plan.gate:  # eq. 2.2's f_i, a select: power may be huge where f_i = 0
             body.append("bool f_i = n_dot_vp > 0.0;")
@@ -151,7 +164,7 @@ def _side_function(plan: Plan, index: int) -> list[str]:
             lines.append(f"    vec3 n_unit = {unit[0]};")
             lines.append(f"    GSScale n_scale = {unit[1]};")
         if plan.view:
-            lines.append("    vec3 VPe = gs_unit(gs_viewer_point - V);")
+            lines.append("    vec3 VPe = gs_direction(gs_viewer_point - V);")
         elif plan.viewer_direction:
             lines.append("    vec3 VPe = gs_viewer_direction;")
     lines.append("    vec3 c_pri = e_cm.rgb + a_cm.rgb * gs_global_ambient;")
@@ -174,8 +187,9 @@ def _side_function(plan: Plan, index: int) -> list[str]:
 
 
 def library(plan: Plan, lengths: dict[str, int]) -> str:
-    """The uniforms (`lengths`: array length by name, 0 for a non-array), `GSColor`, `gs_unit`,
-    `gs_pow`, `gs_eye_space` and one ``gs_lighting_<side>`` function per lit side."""
+    """The uniforms (`lengths`: array length by name, 0 for a non-array), `GSColor`, the helpers
+    (`gs_dot`, `gs_transform`, `gs_unit`, `gs_direction`, the power's where one is needed),
+    `gs_eye_space` and one ``gs_lighting_<side>`` function per lit side."""
     powered = [side for side in plan.sides if _powered(plan, side)]
     uses_pow = bool(powered) or any(g.spot and not g.directional for g in plan.groups)
     lines = [
@@ -188,10 +202,27 @@ def library(plan: Plan, lengths: dict[str, int]) -> str:
         "};",
         *[_declaration(name, n) for name, n in lengths.items()],
         "",
+        *_PRECISE,
+        "// a.b summed in the kernel's order, (x + y) + z, unfused (src/lanes.rs V3::dot).",
+        "float gs_dot(vec3 a, vec3 b) {",
+        "    GS_PRECISE float d = (a.x * b.x + a.y * b.y) + a.z * b.z;",
+        "    return d;",
+        "}",
+        "// m v in the kernel's order, column by column (src/prepare.rs mul3).",
+        "vec3 gs_transform(mat3 m, vec3 v) {",
+        "    GS_PRECISE vec3 t = (m[0] * v.x + m[1] * v.y) + m[2] * v.z;",
+        "    return t;",
+        "}",
         "// v / |v|, and 0 for v = 0 (GL: undefined; glshade's convention).",
         "vec3 gs_unit(vec3 v) {",
-        "    float len = sqrt(dot(v, v));",
+        "    GS_PRECISE float len = sqrt(gs_dot(v, v));",
         "    return len > 0.0 ? v / len : vec3(0.0);",
+        "}",
+        "// v * (1 / |v|), and 0 for v = 0: the kernel's one division for VP, VP_e, h and R.",
+        "vec3 gs_direction(vec3 v) {",
+        "    GS_PRECISE float len = sqrt(gs_dot(v, v));",
+        "    GS_PRECISE vec3 unit = len > 0.0 ? v * (1.0 / len) : vec3(0.0);",
+        "    return unit;",
         "}",
     ]
     if uses_pow:
@@ -200,8 +231,8 @@ def library(plan: Plan, lengths: dict[str, int]) -> str:
     lines += [
         "// Section 2.11.3: eye-space position and normal (normalised with GL_NORMALIZE).",
         "void gs_eye_space(vec3 p, vec3 normal, out vec3 V, out vec3 n) {",
-        "    V = (gs_modelview * vec4(p, 1.0)).xyz;" if m else "    V = p;",
-        "    n = gs_normal_matrix * normal;" if m else "    n = normal;",
+        "    V = gs_transform(mat3(gs_modelview), p) + gs_modelview[3].xyz;" if m else "    V = p;",
+        "    n = gs_transform(gs_normal_matrix, normal);" if m else "    n = normal;",
         *(["    n = gs_unit(n);"] if plan.normalize else []),
         "}",
     ]
