@@ -313,6 +313,7 @@ class Float32Tolerance:
         README "Accuracy") ``+ 2 u sum s |specular|``: the evaluation GL implementations use,
         ``pow(n.h, s)`` of a float32 dot product rounded to about u, multiplies that rounding by
         the exponent s (measured on Mesa: at most 0.35 u s |specular| beyond the first term).
+        Without `gl_pow` the first term alone.
     comparable : (n,) bool
         Not within `margin` of a discontinuity (n.VP = 0, a cone edge, a point light), and no
         specular power above float32's range (a power of a non-unit normal, e.g. (5 n.h)^128,
@@ -327,9 +328,17 @@ class Float32Tolerance:
 
 
 def float32_tolerance(
-    ref: Any, positions: np.ndarray, normals: np.ndarray, tol: float = 1e-5, margin: float = 2e-5
+    ref: Any,
+    positions: np.ndarray,
+    normals: np.ndarray,
+    tol: float = 1e-5,
+    margin: float = 2e-5,
+    *,
+    gl_pow: bool = True,
 ) -> Float32Tolerance:
-    """The `Float32Tolerance` of the inputs `gl_reference.gl_lighting` sees as `ref`."""
+    """The `Float32Tolerance` of the inputs `gl_reference.gl_lighting` sees as `ref`; without
+    `gl_pow` (a peer that forms the powers as glshade does, glshade.glsl) the bound is the flat
+    ``tol * max(1, sum |terms|)``."""
     import copy
 
     from gl_reference import gl_lighting
@@ -368,11 +377,9 @@ def float32_tolerance(
             spec = np.abs(terms[2 * side + 1][:, :3]).max(axis=1)
             power_sum += float(material["shininess"]) * spec
             largest_power = np.maximum(largest_power, powers[2 * side + 1][:, 0])
-    bound = (
-        tol * np.maximum(1.0, reference.magnitude)
-        + 16 * u * reference.sensitivity
-        + 2 * u * power_sum
-    )
+    bound = tol * np.maximum(1.0, reference.magnitude)
+    if gl_pow:
+        bound = bound + 16 * u * reference.sensitivity + 2 * u * power_sum
     comparable = (reference.margin > margin) & (largest_power < np.finfo(np.float32).max / 64)
     return Float32Tolerance(bound, comparable, reference)
 
