@@ -144,12 +144,12 @@ def test_report_json_follows_its_schema_and_every_row_is_within_its_bound(
         if row["kind"] == "typical":  # unit normals and colours in [0, 1]: the plain bound
             assert row["max_error"] <= mode.unit, row
         assert row["time_low_ns"] <= row["time_ns"] <= row["time_high_ns"]
-        low, high = row["time_over_floor_low"], row["time_over_floor_high"]
-        assert low <= row["time_over_floor"] <= high
-        assert row["floor_low_ns"] <= row["floor_ns"] <= row["floor_high_ns"]
+        low, high = row["time_over_kernel_low"], row["time_over_kernel_high"]
+        assert low <= row["time_over_kernel"] <= high
+        assert row["kernel_low_ns"] <= row["kernel_ns"] <= row["kernel_high_ns"]
         # Each round's ratio is that round's time over its kernel's, per vertex of each.
-        assert row["time_low_ns"] / row["floor_high_ns"] <= low * (1 + 1e-12), row
-        assert high <= row["time_high_ns"] / row["floor_low_ns"] * (1 + 1e-12), row
+        assert row["time_low_ns"] / row["kernel_high_ns"] <= low * (1 + 1e-12), row
+        assert high <= row["time_high_ns"] / row["kernel_low_ns"] * (1 + 1e-12), row
         assert row["mvert_s"] == pytest.approx(1e3 / row["time_ns"])
         assert row["p999_error"] <= row["max_error"] and row["mean_error"] <= row["max_error"]
     # Only float32's arithmetic lands on the other side of a cone's edge, within 1e-6 rad of it.
@@ -170,11 +170,11 @@ def test_the_data_files_say_the_same(small: tuple[gs.Report, Path]) -> None:
         assert read["scene"] == row["scene"] and read["isa"] == row["isa"]
         assert float(read["max_error"]) == row["max_error"]
         assert float(read["time_ns"]) == row["time_ns"]
-        assert float(read["time_over_floor"]) == row["time_over_floor"]
+        assert float(read["time_over_kernel"]) == row["time_over_kernel"]
     assert json.loads(result.to_json())["rows"] == json.loads(json.dumps(dicts))
     text = (folder / "report.md").read_text()
-    assert result.machine["cpu"] in text and result.settings["floor"] in text
-    assert "| x floor | spread | ns/vertex | spread |" in text
+    assert result.machine["cpu"] in text and result.settings["kernel"] in text
+    assert "| x kernel | spread | ns/vertex | spread |" in text
     assert text.count(" | float32 | fast | ") == len(CLASSES) * len({r.isa for r in result.rows})
     assert "Area light sampled by k points" in text and "Gouraud against per-pixel Phong" in text
 
@@ -287,11 +287,11 @@ def test_the_docstring_example_runs() -> None:
 
 
 def _row(
-    scene: str, isa: str, floor: tuple[float, float, float], ns: tuple[float, float, float]
+    scene: str, isa: str, kernel: tuple[float, float, float], ns: tuple[float, float, float]
 ) -> dict[str, Any]:
-    names = (*report_compare.FIGURES["time_over_floor"], *report_compare.FIGURES["time_ns"])
+    names = (*report_compare.FIGURES["time_over_kernel"], *report_compare.FIGURES["time_ns"])
     keys = {"scene": scene, "dtype": "float32", "accuracy": "fast", "isa": isa}
-    return {**keys, **dict(zip(names, (*floor, *ns), strict=True))}
+    return {**keys, **dict(zip(names, (*kernel, *ns), strict=True))}
 
 
 # Made-up runs: B is 20% slower in seconds on every row, its calibrated figure moves little.
@@ -312,7 +312,7 @@ RUN_B = [  # calibrated: which way B agrees with A; seconds: which way
 
 
 def test_compare_counts_the_rows_whose_medians_lie_within_the_other_runs_spread() -> None:
-    calibrated = report_compare.agreement(RUN_A, RUN_B, "time_over_floor")
+    calibrated = report_compare.agreement(RUN_A, RUN_B, "time_over_kernel")
     assert (calibrated.rows, calibrated.b_in_a, calibrated.a_in_b, calibrated.both) == (4, 3, 2, 2)
     assert calibrated.share(calibrated.both) == 0.5
     assert calibrated.drift == pytest.approx(statistics.median([1.05, 1.1, 5.8 / 6, 9 / 8]))
@@ -321,7 +321,7 @@ def test_compare_counts_the_rows_whose_medians_lie_within_the_other_runs_spread(
     assert (absolute.b_in_a, absolute.a_in_b, absolute.both) == (0, 2, 0)
     assert absolute.drift == pytest.approx(1.2)
     # Swapping the runs swaps the one-way counts.
-    swapped = report_compare.agreement(RUN_B, RUN_A, "time_over_floor")
+    swapped = report_compare.agreement(RUN_B, RUN_A, "time_over_kernel")
     assert (swapped.b_in_a, swapped.a_in_b, swapped.both) == (2, 3, 2)
 
 
@@ -331,15 +331,15 @@ def test_compare_rejects_reports_that_cannot_be_compared() -> None:
     with pytest.raises(ValueError, match=r"b has the row .*'two'.* twice"):
         report_compare.agreement(RUN_A, RUN_B + RUN_B[1:2], "time_ns")
     with pytest.raises(
-        ValueError, match="figure must be one of time_over_floor, time_ns, got 'ms'"
+        ValueError, match="figure must be one of time_over_kernel, time_ns, got 'ms'"
     ):
         report_compare.agreement(RUN_A, RUN_B, "ms")
 
 
 def test_a_report_without_the_calibrated_figure_compares_on_seconds_only() -> None:
-    old = [{k: v for k, v in row.items() if "floor" not in k} for row in RUN_A]
+    old = [{k: v for k, v in row.items() if "kernel" not in k} for row in RUN_A]
     result = report_compare.compare({"rows": old}, {"rows": RUN_B})
-    assert result["time_over_floor"] is None
+    assert result["time_over_kernel"] is None
     assert result["time_ns"] == report_compare.agreement(RUN_A, RUN_B, "time_ns")
 
 
@@ -351,7 +351,7 @@ def test_the_compare_option_prints_both_figures_and_names_a_bad_file(
     b.write_text(json.dumps({"schema": "glshade-report/2", "rows": RUN_B}))
     assert cli.main(["report", "--compare", str(a), str(b)]) == 0
     out = capsys.readouterr().out
-    assert "time_over_floor (4 rows in both): B's median within A's spread 3 (75.0%), " in out
+    assert "time_over_kernel (4 rows in both): B's median within A's spread 3 (75.0%), " in out
     assert "A's within B's 2 (50.0%), both ways 2 (50.0%); B / A 1.075 (median row)" in out
     assert "time_ns (4 rows in both): B's median within A's spread 0 (0.0%)" in out
     bad.write_text(json.dumps({"schema": "glshade-report/2", "rows": []}))

@@ -9,9 +9,10 @@ same inputs evaluated in long double (x87 extended on x86-64, a 64-bit significa
 `baselines.equation` with the stable power ``exp(s·log1p(-|n^ - h^|²/2))``, clamped. The
 references are computed first, then each instruction set's calls are timed in rotating rounds
 (`timing.time_calibrated`), as the benchmarks time theirs, each call beside a fixed calibration
-kernel (`FLOOR`) in the same turn: a row's headline time is its time over the kernel's, the
-median of the per-round ratios, which a change of the shared machine's speed between runs
-leaves alone; the absolute time in ns per vertex stays beside it.
+kernel (`KERNEL`) in the same turn: a row's headline time is its time over the kernel's, the
+median of the per-round ratios, in which most of a change of the shared machine's speed
+between turns, rounds and runs cancels; the absolute time in ns per vertex stays beside it.
+The kernel runs in the row's instruction set, so compare instruction sets by ``time_ns``.
 """
 
 from __future__ import annotations
@@ -39,7 +40,7 @@ from .progress import Progress
 from .scenes import report_classes
 from .studies import area_light_convergence, gouraud_vs_phong
 
-__all__ = ["FLOOR", "ISAS", "MODES", "Report", "Row", "report"]
+__all__ = ["ISAS", "KERNEL", "MODES", "Report", "Row", "report"]
 
 MODES: tuple[tuple[str, Literal["fast", "exact", "display"]], ...] = (
     ("float32", "fast"),
@@ -55,10 +56,13 @@ REFERENCE = (
     "the GL equation in long double (numpy's longdouble) with the stable power "
     "exp(s log1p(-|n^ - h^|^2 / 2)), on the inputs as rounded to the dtype, clamped"
 )
-FLOOR = (
-    "the streaming floor (glshade._glshade.stream: gs.shade's tasks, reads of positions and "
-    "normals, transposes and fresh (n, 4) result, no lighting) on the benchmark's vertices, "
-    "as many as settings.vertices, in the row's dtype, timed in the same turn as the row"
+# Lighting arithmetic through the same thread pool, a few ms a call like most rows: under
+# other people's load it slows as the rows do, which the streaming floor (memory and dispatch,
+# 0.1 ms) did not: its ratios drifted 0.55x to 1.46x per instruction set between runs.
+KERNEL = (
+    "gs.shade of the benchmark's 8 mixed lights, float32, accuracy fast, on as many of the "
+    "benchmark's vertices as settings.vertices, in the row's instruction set, timed in the "
+    "same turn as the row"
 )
 
 
@@ -75,13 +79,13 @@ class Row:
     discontinuity that land on its other side.
 
     Times come from ``rounds`` rounds, each one call on ``vertices`` vertices and, in the same
-    turn, one of the calibration kernel (`FLOOR`, on the report's vertex count). The headline
-    is ``time_over_floor``: the row's time per vertex over the kernel's, the median of the
-    per-round ratios, with the smallest and largest ratio (``time_over_floor_low``,
+    turn, one of the calibration kernel (`KERNEL`, on the report's vertex count). The headline
+    is ``time_over_kernel``: the row's time per vertex over the kernel's, the median of the
+    per-round ratios, with the smallest and largest ratio (``time_over_kernel_low``,
     ``_high``) as its stated spread; it is the figure two runs are compared on
     (`report_compare`). ``time_ns`` is the median ns per vertex with the fastest and slowest
     round as its spread (``time_low_ns``, ``time_high_ns``): seconds, as the machine ran
-    then. ``floor_ns`` (and its spread) is the kernel's ns per vertex in the row's rounds.
+    then. ``kernel_ns`` (and its spread) is the kernel's ns per vertex in the row's rounds.
     """
 
     scene: str
@@ -102,12 +106,12 @@ class Row:
     time_ns: float
     time_low_ns: float
     time_high_ns: float
-    time_over_floor: float
-    time_over_floor_low: float
-    time_over_floor_high: float
-    floor_ns: float
-    floor_low_ns: float
-    floor_high_ns: float
+    time_over_kernel: float
+    time_over_kernel_low: float
+    time_over_kernel_high: float
+    kernel_ns: float
+    kernel_low_ns: float
+    kernel_high_ns: float
     rounds: int
 
     @property
@@ -129,7 +133,7 @@ class Report:
         and Python versions, platform, date.
     settings : dict
         ``vertices`` and ``rounds`` as asked, ``reference`` (what the errors are against),
-        ``floor`` (the calibration kernel, `FLOOR`).
+        ``kernel`` (the calibration kernel, `KERNEL`).
     area_lights : tuple of dict
         `studies.area_light_convergence` (empty when the studies were left out).
     gouraud_phong : tuple of dict
@@ -246,12 +250,12 @@ def _supported(isas: Sequence[str]) -> list[str]:
 
 
 def _run_worker(
-    isa: str, files: list[Path], rounds: int, floor_vertices: int, progress: Progress
+    isa: str, files: list[Path], rounds: int, kernel_vertices: int, progress: Progress
 ) -> list[Row]:
     """Measures every case with `isa` in a child process, following its rounds."""
     env = {**os.environ, "GLSHADE_ISA": isa}
     worker = [sys.executable, "-m", "glshade._tools.report_worker"]
-    command = [*worker, str(rounds), str(floor_vertices), *map(str, files)]
+    command = [*worker, str(rounds), str(kernel_vertices), *map(str, files)]
     rows: list[Row] = []
     with subprocess.Popen(command, env=env, stdout=subprocess.PIPE, text=True) as child:
         assert child.stdout is not None
@@ -283,8 +287,8 @@ def report(
         Vertices per scene class (>= 1; the thousand-light class takes a hundredth).
     rounds : int
         Timed rounds (>= 1); in each, every call runs `timing.BURST` times in a row and the
-        fastest counts, as in ``bench shade``, and so does the calibration kernel (`FLOOR`)
-        in the same turn. A row's headline, ``time_over_floor``, is the median of the per-round
+        fastest counts, as in ``bench shade``, and so does the calibration kernel (`KERNEL`)
+        in the same turn. A row's headline, ``time_over_kernel``, is the median of the per-round
         ratios of its time per vertex to the kernel's, the smallest and largest ratio its
         spread; ``time_ns`` is the median ns per vertex, the fastest and slowest round its
         spread.
@@ -346,7 +350,7 @@ def report(
             bar.step("area lights")
             gouraud = gouraud_vs_phong()
             bar.step("Gouraud against Phong")
-    settings = {"vertices": vertices, "rounds": rounds, "reference": REFERENCE, "floor": FLOOR}
+    settings = {"vertices": vertices, "rounds": rounds, "reference": REFERENCE, "kernel": KERNEL}
     return Report(tuple(rows), machine(), settings, tuple(area), tuple(gouraud))
 
 

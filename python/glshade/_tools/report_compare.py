@@ -3,7 +3,7 @@
 A row agrees one way when one run's median lies within the other run's stated spread (its
 smallest and largest round), both ways when each lies within the other's. Rows are matched by
 scene class, dtype, accuracy mode and instruction set. Both figures are compared: the headline
-``time_over_floor`` (time over the calibration kernel's, per-round ratios) and the absolute
+``time_over_kernel`` (time over the calibration kernel's, per-round ratios) and the absolute
 ``time_ns``; a report of schema glshade-report/1 has only the absolute one.
 """
 
@@ -20,7 +20,7 @@ __all__ = ["FIGURES", "Agreement", "agreement", "compare", "load", "main"]
 
 # Per figure: its median's field and its stated spread's lower and upper ends.
 FIGURES = {
-    "time_over_floor": ("time_over_floor", "time_over_floor_low", "time_over_floor_high"),
+    "time_over_kernel": ("time_over_kernel", "time_over_kernel_low", "time_over_kernel_high"),
     "time_ns": ("time_ns", "time_low_ns", "time_high_ns"),
 }
 KEY = ("scene", "dtype", "accuracy", "isa")

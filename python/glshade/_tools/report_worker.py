@@ -1,11 +1,11 @@
 """One instruction set's part of `gs.report`, in a process of its own (glshade picks its
 instruction set once per process):
-``python -m glshade._tools.report_worker ROUNDS FLOOR_VERTICES FILE...``.
+``python -m glshade._tools.report_worker ROUNDS KERNEL_VERTICES FILE...``.
 
 Each FILE is a pickled case of `report._prepare` (a class, a dtype, the inputs, the clamped
 reference and the per-channel bounds). The worker shades every case in every mode, measures the
 errors, then times all calls in rotating rounds, each beside the calibration kernel
-(`report.FLOOR`: the streaming floor on FLOOR_VERTICES vertices of the call's dtype); it writes
+(`report.KERNEL`: a fixed `gs.shade` call on KERNEL_VERTICES vertices); it writes
 one JSON line per step on stdout (``{"step": ...}``) and the rows last (``{"rows": [...]}``).
 """
 
@@ -22,12 +22,11 @@ from typing import Any, Literal
 import numpy as np
 
 import glshade as gs
-from glshade import _glshade
 
 from .bounds import BOUNDS
 from .machine import instruction_set
 from .report import MODES, error_statistics
-from .scenes import bench_vertices
+from .scenes import bench_scenes, bench_vertices
 from .timing import BURST, time_calibrated
 
 
@@ -56,15 +55,12 @@ def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact", "display"])
 
 
 def main(argv: list[str]) -> int:
-    rounds, floor_vertices, files = int(argv[0]), int(argv[1]), [Path(a) for a in argv[2:]]
+    rounds, kernel_vertices, files = int(argv[0]), int(argv[1]), [Path(a) for a in argv[2:]]
     isa = instruction_set()
     cases = [pickle.loads(f.read_bytes()) for f in files]
-    # The calibration kernel: the same fixed inputs for every row of a dtype, whatever its class.
-    p32, n32 = bench_vertices(floor_vertices)
-    floors = {
-        dtype: functools.partial(_glshade.stream, p32.astype(dtype), n32.astype(dtype), True)
-        for dtype in ("float32", "float64")
-    }
+    # The calibration kernel: one fixed call for every row, whatever its class, dtype and mode.
+    p32, n32 = bench_vertices(kernel_vertices)
+    kernel = functools.partial(gs.shade, p32, n32, bench_scenes()["8 mixed"], accuracy="fast")
     partial: dict[str, dict[str, Any]] = {}
     calls: dict[str, tuple[Callable[[], Any], Callable[[], Any]]] = {}
     for case in cases:
@@ -84,7 +80,7 @@ def main(argv: list[str]) -> int:
             }
             p, normals, scene = case["positions"], case["normals"], case["model"]
             own = functools.partial(gs.shade, p, normals, scene, accuracy=accuracy)
-            calls[key] = (own, floors[dtype])
+            calls[key] = (own, kernel)
     print(json.dumps({"step": "errors"}), flush=True)
 
     def step() -> None:
@@ -93,21 +89,21 @@ def main(argv: list[str]) -> int:
     timings = time_calibrated(calls, rounds, burst=BURST, on_round=step)
     rows = []
     for key, row in partial.items():
-        t, ns, floor_ns = timings[key], 1e9 / row["vertices"], 1e9 / floor_vertices
+        t, ns, kernel_ns = timings[key], 1e9 / row["vertices"], 1e9 / kernel_vertices
         # Per vertex over per vertex: the thousand-light class shades fewer vertices per call.
-        relative = t.relative.as_dict(floor_vertices / row["vertices"])
+        relative = t.relative.as_dict(kernel_vertices / row["vertices"])
         rows.append(
             {
                 **row,
                 "time_ns": t.own.median * ns,
                 "time_low_ns": t.own.low * ns,
                 "time_high_ns": t.own.high * ns,
-                "time_over_floor": relative["median"],
-                "time_over_floor_low": relative["low"],
-                "time_over_floor_high": relative["high"],
-                "floor_ns": t.calibration.median * floor_ns,
-                "floor_low_ns": t.calibration.low * floor_ns,
-                "floor_high_ns": t.calibration.high * floor_ns,
+                "time_over_kernel": relative["median"],
+                "time_over_kernel_low": relative["low"],
+                "time_over_kernel_high": relative["high"],
+                "kernel_ns": t.calibration.median * kernel_ns,
+                "kernel_low_ns": t.calibration.low * kernel_ns,
+                "kernel_high_ns": t.calibration.high * kernel_ns,
                 "rounds": rounds,
             }
         )
