@@ -58,7 +58,8 @@ REFERENCE = (
 )
 # Lighting arithmetic through the same thread pool, a few ms a call like most rows: under
 # other people's load it slows as the rows do, which the streaming floor (memory and dispatch,
-# 0.1 ms) did not: its ratios drifted 0.55x to 1.46x per instruction set between runs.
+# 0.1 ms) did not: per instruction set, ratios to it moved 0.55x to 1.46x between runs, to
+# this kernel 0.90x to 1.10x (README, "Error against run time").
 KERNEL = (
     "gs.shade of the benchmark's 8 mixed lights, float32, accuracy fast, on as many of the "
     "benchmark's vertices as settings.vertices, in the row's instruction set, timed in the "
