@@ -3,6 +3,7 @@ the benchmark compares like with like (checked here; the timing itself is never 
 bench accepts only its own flags and saves its results as JSON with the machine."""
 
 import json
+import types
 from pathlib import Path
 
 import numpy as np
@@ -12,10 +13,11 @@ from conftest import require
 import glshade as gs
 from glshade import __main__ as cli
 from glshade import _glshade
+from glshade._tools import timing
 from glshade._tools.baselines import numba_shade, numpy_shade
 from glshade._tools.machine import machine
 from glshade._tools.scenes import bench_scenes, bench_vertices
-from glshade._tools.timing import Timing, ratio, time_rounds
+from glshade._tools.timing import Timing, ratio, time_calibrated, time_rounds
 
 SCENES = bench_scenes()
 
@@ -115,6 +117,7 @@ def test_the_streaming_floor_reads_and_writes_what_shade_does(dtype: type) -> No
         ["bench", "render", "--size", "0"],
         ["report", "--vertices", "0"],
         ["report", "--isa", "sse"],
+        ["report", "--compare", "one.json"],  # two files
         ["bench", "cluster", "--chunk", "0"],
         ["bench", "cluster", "--sizes", "100"],
     ],
@@ -141,3 +144,34 @@ def test_time_rounds_rotates_the_order_and_reports_median_and_spread() -> None:
     assert ratio(Timing((2.0, 6.0)), Timing((1.0, 2.0))).seconds == (2.0, 3.0)
     with pytest.raises(ValueError, match="rounds and burst must be >= 1, got 0 and 1"):
         time_rounds(methods, 0)
+
+
+def test_time_calibrated_times_each_call_beside_its_kernel_and_cancels_a_drift(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    clock = [0.0]
+    monkeypatch.setattr(timing, "time", types.SimpleNamespace(perf_counter=lambda: clock[0]))
+    calls: list[str] = []
+    cost = {"a": 2.0, "a/k": 1.0, "b": 6.0, "b/k": 2.0}
+    slowness = [1.0]  # the shared machine, twice as slow every round
+
+    def call(name: str) -> None:
+        calls.append(name)
+        clock[0] += cost[name] * slowness[0]
+
+    def slow_down() -> None:
+        slowness[0] *= 2
+
+    methods = {n: (lambda n=n: call(n), lambda n=n: call(f"{n}/k")) for n in "ab"}
+    times = time_calibrated(methods, 3, burst=2, on_round=slow_down)
+    assert calls[:4] == ["a", "a/k", "b", "b/k"]  # the warm-up
+    turns = [calls[4 + 8 * r : 12 + 8 * r : 2] for r in range(3)]  # one call of each burst
+    assert calls[4:6] == ["a", "a"]  # a burst: the same call twice in a row
+    # The method then its kernel, then (rotated and reversed) the kernel first.
+    assert turns == [["a", "a/k", "b", "b/k"], ["a/k", "a", "b/k", "b"], ["a", "a/k", "b", "b/k"]]
+    assert times["a"].own.seconds == (2.0, 4.0, 8.0)
+    assert times["a"].calibration.seconds == (1.0, 2.0, 4.0)
+    assert times["a"].relative.seconds == (2.0, 2.0, 2.0)  # the drift cancels
+    assert times["b"].relative.seconds == (3.0, 3.0, 3.0)
+    with pytest.raises(ValueError, match="rounds and burst must be >= 1, got 2 and 0"):
+        time_calibrated(methods, 2, burst=0)

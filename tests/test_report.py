@@ -1,7 +1,8 @@
 """`gs.report` and ``python -m glshade report``: its reference is the GL equation (against the
 tests' float64 transcription and the 50-digit oracle), report.json follows its schema, every row
-is within its mode's bound, and the SVG figures hold the axis labels, the legend and one point
-per row."""
+is within its mode's bound, the SVG figures hold the axis labels, the legend and one point
+per row, and ``report --compare`` counts the rows on which two runs agree (on made-up rows:
+the timing itself is never a test)."""
 
 from __future__ import annotations
 
@@ -12,6 +13,7 @@ import inspect
 import io
 import json
 import pickle
+import statistics
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -24,7 +26,9 @@ from conftest import require
 
 import glshade as gs
 from gl_reference import RefScene, gl_lighting
+from glshade import __main__ as cli
 from glshade._tools import report as report_module
+from glshade._tools import report_compare
 from glshade._tools.baselines import equation, stable_power
 from glshade._tools.bounds import BOUNDS
 from glshade._tools.progress import Progress
@@ -140,6 +144,12 @@ def test_report_json_follows_its_schema_and_every_row_is_within_its_bound(
         if row["kind"] == "typical":  # unit normals and colours in [0, 1]: the plain bound
             assert row["max_error"] <= mode.unit, row
         assert row["time_low_ns"] <= row["time_ns"] <= row["time_high_ns"]
+        low, high = row["time_over_kernel_low"], row["time_over_kernel_high"]
+        assert low <= row["time_over_kernel"] <= high
+        assert row["kernel_low_ns"] <= row["kernel_ns"] <= row["kernel_high_ns"]
+        # Each round's ratio is that round's time over its kernel's, per vertex of each.
+        assert row["time_low_ns"] / row["kernel_high_ns"] <= low * (1 + 1e-12), row
+        assert high <= row["time_high_ns"] / row["kernel_low_ns"] * (1 + 1e-12), row
         assert row["mvert_s"] == pytest.approx(1e3 / row["time_ns"])
         assert row["p999_error"] <= row["max_error"] and row["mean_error"] <= row["max_error"]
     # Only float32's arithmetic lands on the other side of a cone's edge, within 1e-6 rad of it.
@@ -160,9 +170,11 @@ def test_the_data_files_say_the_same(small: tuple[gs.Report, Path]) -> None:
         assert read["scene"] == row["scene"] and read["isa"] == row["isa"]
         assert float(read["max_error"]) == row["max_error"]
         assert float(read["time_ns"]) == row["time_ns"]
+        assert float(read["time_over_kernel"]) == row["time_over_kernel"]
     assert json.loads(result.to_json())["rows"] == json.loads(json.dumps(dicts))
     text = (folder / "report.md").read_text()
-    assert result.machine["cpu"] in text
+    assert result.machine["cpu"] in text and result.settings["kernel"] in text
+    assert "| x kernel | spread | ns/vertex | spread |" in text
     assert text.count(" | float32 | fast | ") == len(CLASSES) * len({r.isa for r in result.rows})
     assert "Area light sampled by k points" in text and "Gouraud against per-pixel Phong" in text
 
@@ -272,3 +284,78 @@ def test_bad_arguments_name_themselves(kwargs: dict[str, Any], message: str) -> 
 def test_the_docstring_example_runs() -> None:
     result = doctest.testmod(report_module, optionflags=doctest.ELLIPSIS)
     assert result.attempted >= 2 and result.failed == 0
+
+
+def _row(
+    scene: str, isa: str, kernel: tuple[float, float, float], ns: tuple[float, float, float]
+) -> dict[str, Any]:
+    names = (*report_compare.FIGURES["time_over_kernel"], *report_compare.FIGURES["time_ns"])
+    keys = {"scene": scene, "dtype": "float32", "accuracy": "fast", "isa": isa}
+    return {**keys, **dict(zip(names, (*kernel, *ns), strict=True))}
+
+
+# Made-up runs: B is 20% slower in seconds on every row, its calibrated figure moves little.
+RUN_A = [
+    _row("one", "avx2", (2.0, 1.9, 2.2), (10.0, 9.0, 11.0)),
+    _row("two", "avx2", (4.0, 3.0, 4.5), (20.0, 19.0, 21.0)),
+    _row("three", "avx2", (6.0, 5.0, 6.5), (30.0, 25.0, 31.0)),
+    _row("four", "avx2", (8.0, 7.9, 8.1), (40.0, 39.0, 41.0)),
+    _row("only in A", "avx2", (1.0, 1.0, 1.0), (1.0, 1.0, 1.0)),
+]
+RUN_B = [  # calibrated: which way B agrees with A; seconds: which way
+    _row("one", "avx2", (2.1, 2.0, 2.3), (12.0, 9.5, 13.0)),  # both; A in B only
+    _row("two", "avx2", (4.4, 4.2, 4.6), (24.0, 20.0, 25.0)),  # B in A only; A in B only
+    _row("three", "avx2", (5.8, 5.4, 6.0), (36.0, 35.0, 37.0)),  # both (the ends count); neither
+    _row("four", "avx2", (9.0, 8.5, 9.5), (48.0, 47.0, 49.0)),  # neither; neither
+    _row("one", "baseline", (1.0, 1.0, 1.0), (1.0, 1.0, 1.0)),
+]
+
+
+def test_compare_counts_the_rows_whose_medians_lie_within_the_other_runs_spread() -> None:
+    calibrated = report_compare.agreement(RUN_A, RUN_B, "time_over_kernel")
+    assert (calibrated.rows, calibrated.b_in_a, calibrated.a_in_b, calibrated.both) == (4, 3, 2, 2)
+    assert calibrated.share(calibrated.both) == 0.5
+    assert calibrated.drift == pytest.approx(statistics.median([1.05, 1.1, 5.8 / 6, 9 / 8]))
+    assert calibrated.width_a == pytest.approx(statistics.median([0.15, 0.375, 0.25, 0.025]))
+    absolute = report_compare.agreement(RUN_A, RUN_B, "time_ns")
+    assert (absolute.b_in_a, absolute.a_in_b, absolute.both) == (0, 2, 0)
+    assert absolute.drift == pytest.approx(1.2)
+    # Swapping the runs swaps the one-way counts.
+    swapped = report_compare.agreement(RUN_B, RUN_A, "time_over_kernel")
+    assert (swapped.b_in_a, swapped.a_in_b, swapped.both) == (2, 3, 2)
+
+
+def test_compare_rejects_reports_that_cannot_be_compared() -> None:
+    with pytest.raises(ValueError, match="a and b share no row"):
+        report_compare.agreement(RUN_A[:1], RUN_B[1:2], "time_ns")
+    with pytest.raises(ValueError, match=r"b has the row .*'two'.* twice"):
+        report_compare.agreement(RUN_A, RUN_B + RUN_B[1:2], "time_ns")
+    with pytest.raises(
+        ValueError, match="figure must be one of time_over_kernel, time_ns, got 'ms'"
+    ):
+        report_compare.agreement(RUN_A, RUN_B, "ms")
+
+
+def test_a_report_without_the_calibrated_figure_compares_on_seconds_only() -> None:
+    old = [{k: v for k, v in row.items() if "kernel" not in k} for row in RUN_A]
+    result = report_compare.compare({"rows": old}, {"rows": RUN_B})
+    assert result["time_over_kernel"] is None
+    assert result["time_ns"] == report_compare.agreement(RUN_A, RUN_B, "time_ns")
+
+
+def test_the_compare_option_prints_both_figures_and_names_a_bad_file(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    a, b, bad = tmp_path / "a.json", tmp_path / "b.json", tmp_path / "bad.json"
+    a.write_text(json.dumps({"schema": "glshade-report/2", "rows": RUN_A}))
+    b.write_text(json.dumps({"schema": "glshade-report/2", "rows": RUN_B}))
+    assert cli.main(["report", "--compare", str(a), str(b)]) == 0
+    out = capsys.readouterr().out
+    assert "time_over_kernel (4 rows in both): B's median within A's spread 3 (75.0%), " in out
+    assert "A's within B's 2 (50.0%), both ways 2 (50.0%); B / A 1.075 (median row)" in out
+    assert "time_ns (4 rows in both): B's median within A's spread 0 (0.0%)" in out
+    bad.write_text(json.dumps({"schema": "glshade-report/2", "rows": []}))
+    with pytest.raises(SystemExit) as stop:
+        cli.main(["report", "--compare", str(a), str(bad)])
+    assert stop.value.code == 2
+    assert f"--compare: B: {bad} is not a glshade report.json (no rows)" in capsys.readouterr().err

@@ -62,6 +62,12 @@ def _parser() -> argparse.ArgumentParser:
     )
     rep.add_argument("--no-studies", action="store_true", help="leave out the two studies")
     rep.add_argument("--quiet", action="store_true", help="no progress bar")
+    rep.add_argument(
+        "--compare",
+        nargs=2,
+        metavar=("A.json", "B.json"),
+        help="measure nothing: print the share of rows on which two report.json files agree",
+    )
     bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
     which = bench.add_subparsers(dest="what", required=True)
     shade = which.add_parser("shade", help="gs.shade beside numpy and numba")
@@ -109,7 +115,15 @@ def _parser() -> argparse.ArgumentParser:
 
 def main(argv: Sequence[str] | None = None) -> int:
     """Parses `argv` (default: the command line) and runs the command; its exit status."""
-    args = _parser().parse_args(argv)
+    parser = _parser()
+    args = parser.parse_args(argv)
+    if args.command == "report" and args.compare:
+        from .report_compare import main as compare
+
+        try:
+            return compare(*args.compare)
+        except ValueError as error:
+            parser.error(f"--compare: {error}")
     if args.command == "report":
         import glshade as gs
 

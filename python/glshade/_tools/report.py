@@ -8,7 +8,11 @@ its set once per process, capped by ``GLSHADE_ISA``). Errors are against the ref
 same inputs evaluated in long double (x87 extended on x86-64, a 64-bit significand) by
 `baselines.equation` with the stable power ``exp(s·log1p(-|n^ - h^|²/2))``, clamped. The
 references are computed first, then each instruction set's calls are timed in rotating rounds
-(`timing.time_rounds`), as the benchmarks time theirs.
+(`timing.time_calibrated`), as the benchmarks time theirs, each call beside a fixed calibration
+kernel (`KERNEL`) in the same turn: a row's headline time is its time over the kernel's, the
+median of the per-round ratios, in which most of a change of the shared machine's speed
+between turns, rounds and runs cancels; the absolute time in ns per vertex stays beside it.
+The kernel runs in the row's instruction set, so compare instruction sets by ``time_ns``.
 """
 
 from __future__ import annotations
@@ -36,7 +40,7 @@ from .progress import Progress
 from .scenes import report_classes
 from .studies import area_light_convergence, gouraud_vs_phong
 
-__all__ = ["ISAS", "MODES", "Report", "Row", "report"]
+__all__ = ["ISAS", "KERNEL", "MODES", "Report", "Row", "report"]
 
 MODES: tuple[tuple[str, Literal["fast", "exact", "display"]], ...] = (
     ("float32", "fast"),
@@ -47,10 +51,19 @@ MODES: tuple[tuple[str, Literal["fast", "exact", "display"]], ...] = (
     ("float64", "display"),
 )
 ISAS = ("avx512", "avx2", "baseline")
-SCHEMA = "glshade-report/1"
+SCHEMA = "glshade-report/2"
 REFERENCE = (
     "the GL equation in long double (numpy's longdouble) with the stable power "
     "exp(s log1p(-|n^ - h^|^2 / 2)), on the inputs as rounded to the dtype, clamped"
+)
+# Lighting arithmetic through the same thread pool, a few ms a call like most rows: under
+# other people's load it slows as the rows do, which the streaming floor (memory and dispatch,
+# 0.1 ms) did not: per instruction set, ratios to it moved 0.55x to 1.46x between runs, to
+# this kernel 0.90x to 1.10x (README, "Error against run time").
+KERNEL = (
+    "gs.shade of the benchmark's 8 mixed lights, float32, accuracy fast, on as many of the "
+    "benchmark's vertices as settings.vertices, in the row's instruction set, timed in the "
+    "same turn as the row"
 )
 
 
@@ -64,8 +77,16 @@ class Row:
     mode's bound on unit normals and colours in [0, 1] (`bounds.BOUNDS`);
     ``max_error_over_bound`` the largest error over its channel's own bound (<= 1 when every
     channel is within it), leaving out the ``flipped`` vertices: those within `bounds.EDGE` of a
-    discontinuity that land on its other side. Times are per vertex: the median, fastest and
-    slowest of ``rounds`` rounds, each one call on ``vertices`` vertices.
+    discontinuity that land on its other side.
+
+    Times come from ``rounds`` rounds, each one call on ``vertices`` vertices and, in the same
+    turn, one of the calibration kernel (`KERNEL`, on the report's vertex count). The headline
+    is ``time_over_kernel``: the row's time per vertex over the kernel's, the median of the
+    per-round ratios, with the smallest and largest ratio (``time_over_kernel_low``,
+    ``_high``) as its stated spread; it is the figure two runs are compared on
+    (`report_compare`). ``time_ns`` is the median ns per vertex with the fastest and slowest
+    round as its spread (``time_low_ns``, ``time_high_ns``): seconds, as the machine ran
+    then. ``kernel_ns`` (and its spread) is the kernel's ns per vertex in the row's rounds.
     """
 
     scene: str
@@ -86,6 +107,12 @@ class Row:
     time_ns: float
     time_low_ns: float
     time_high_ns: float
+    time_over_kernel: float
+    time_over_kernel_low: float
+    time_over_kernel_high: float
+    kernel_ns: float
+    kernel_low_ns: float
+    kernel_high_ns: float
     rounds: int
 
     @property
@@ -106,7 +133,8 @@ class Report:
         `machine.machine`: CPU model and flags, CPUs, threads, instruction set, glshade, numpy
         and Python versions, platform, date.
     settings : dict
-        ``vertices`` and ``rounds`` as asked, ``reference`` (what the errors are against).
+        ``vertices`` and ``rounds`` as asked, ``reference`` (what the errors are against),
+        ``kernel`` (the calibration kernel, `KERNEL`).
     area_lights : tuple of dict
         `studies.area_light_convergence` (empty when the studies were left out).
     gouraud_phong : tuple of dict
@@ -222,10 +250,13 @@ def _supported(isas: Sequence[str]) -> list[str]:
     return found
 
 
-def _run_worker(isa: str, files: list[Path], rounds: int, progress: Progress) -> list[Row]:
+def _run_worker(
+    isa: str, files: list[Path], rounds: int, kernel_vertices: int, progress: Progress
+) -> list[Row]:
     """Measures every case with `isa` in a child process, following its rounds."""
     env = {**os.environ, "GLSHADE_ISA": isa}
-    command = [sys.executable, "-m", "glshade._tools.report_worker", str(rounds), *map(str, files)]
+    worker = [sys.executable, "-m", "glshade._tools.report_worker"]
+    command = [*worker, str(rounds), str(kernel_vertices), *map(str, files)]
     rows: list[Row] = []
     with subprocess.Popen(command, env=env, stdout=subprocess.PIPE, text=True) as child:
         assert child.stdout is not None
@@ -257,8 +288,11 @@ def report(
         Vertices per scene class (>= 1; the thousand-light class takes a hundredth).
     rounds : int
         Timed rounds (>= 1); in each, every call runs `timing.BURST` times in a row and the
-        fastest counts, as in ``bench shade``; a row's time is the median over the rounds, with
-        the fastest and the slowest round as its spread.
+        fastest counts, as in ``bench shade``, and so does the calibration kernel (`KERNEL`)
+        in the same turn. A row's headline, ``time_over_kernel``, is the median of the per-round
+        ratios of its time per vertex to the kernel's, the smallest and largest ratio its
+        spread; ``time_ns`` is the median ns per vertex, the fastest and slowest round its
+        spread.
     isas : sequence of str, optional
         Instruction sets among ``"avx512"``, ``"avx2"``, ``"baseline"``; by default every one
         this CPU runs. A set the CPU lacks is left out.
@@ -309,7 +343,7 @@ def report(
         with tempfile.TemporaryDirectory(prefix="glshade-report-") as folder:
             files = _prepare(classes, vertices, Path(folder), bar)
             for isa in chosen:
-                rows += _run_worker(isa, files, rounds, bar)
+                rows += _run_worker(isa, files, rounds, vertices, bar)
         area: list[dict[str, Any]] = []
         gouraud: list[dict[str, Any]] = []
         if studies:
@@ -317,7 +351,7 @@ def report(
             bar.step("area lights")
             gouraud = gouraud_vs_phong()
             bar.step("Gouraud against Phong")
-    settings = {"vertices": vertices, "rounds": rounds, "reference": REFERENCE}
+    settings = {"vertices": vertices, "rounds": rounds, "reference": REFERENCE, "kernel": KERNEL}
     return Report(tuple(rows), machine(), settings, tuple(area), tuple(gouraud))
 
 

@@ -1,10 +1,12 @@
 """One instruction set's part of `gs.report`, in a process of its own (glshade picks its
-instruction set once per process): ``python -m glshade._tools.report_worker ROUNDS FILE...``.
+instruction set once per process):
+``python -m glshade._tools.report_worker ROUNDS KERNEL_VERTICES FILE...``.
 
 Each FILE is a pickled case of `report._prepare` (a class, a dtype, the inputs, the clamped
-reference and the per-channel bounds). The worker shades every case in both modes, measures the
-errors, then times all calls in rotating rounds; it writes one JSON line per step on stdout
-(``{"step": ...}``) and the rows last (``{"rows": [...]}``).
+reference and the per-channel bounds). The worker shades every case in every mode, measures the
+errors, then times all calls in rotating rounds, each beside the calibration kernel
+(`report.KERNEL`: a fixed `gs.shade` call on KERNEL_VERTICES vertices); it writes
+one JSON line per step on stdout (``{"step": ...}``) and the rows last (``{"rows": [...]}``).
 """
 
 from __future__ import annotations
@@ -24,7 +26,8 @@ import glshade as gs
 from .bounds import BOUNDS
 from .machine import instruction_set
 from .report import MODES, error_statistics
-from .timing import BURST, time_rounds
+from .scenes import bench_scenes, bench_vertices
+from .timing import BURST, time_calibrated
 
 
 def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact", "display"]) -> dict[str, Any]:
@@ -52,11 +55,14 @@ def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact", "display"])
 
 
 def main(argv: list[str]) -> int:
-    rounds, files = int(argv[0]), [Path(a) for a in argv[1:]]
+    rounds, kernel_vertices, files = int(argv[0]), int(argv[1]), [Path(a) for a in argv[2:]]
     isa = instruction_set()
     cases = [pickle.loads(f.read_bytes()) for f in files]
+    # The calibration kernel: one fixed call for every row, whatever its class, dtype and mode.
+    p32, n32 = bench_vertices(kernel_vertices)
+    kernel = functools.partial(gs.shade, p32, n32, bench_scenes()["8 mixed"], accuracy="fast")
     partial: dict[str, dict[str, Any]] = {}
-    calls: dict[str, Callable[[], Any]] = {}
+    calls: dict[str, tuple[Callable[[], Any], Callable[[], Any]]] = {}
     for case in cases:
         for dtype, accuracy in MODES:
             if dtype != case["dtype"]:
@@ -73,22 +79,31 @@ def main(argv: list[str]) -> int:
                 **_errors(case, accuracy),
             }
             p, normals, scene = case["positions"], case["normals"], case["model"]
-            calls[key] = functools.partial(gs.shade, p, normals, scene, accuracy=accuracy)
+            own = functools.partial(gs.shade, p, normals, scene, accuracy=accuracy)
+            calls[key] = (own, kernel)
     print(json.dumps({"step": "errors"}), flush=True)
 
     def step() -> None:
         print(json.dumps({"step": "timing"}), flush=True)
 
-    timings = time_rounds(calls, rounds, burst=BURST, on_round=step)
+    timings = time_calibrated(calls, rounds, burst=BURST, on_round=step)
     rows = []
     for key, row in partial.items():
-        t, ns = timings[key], 1e9 / row["vertices"]
+        t, ns, kernel_ns = timings[key], 1e9 / row["vertices"], 1e9 / kernel_vertices
+        # Per vertex over per vertex: the thousand-light class shades fewer vertices per call.
+        relative = t.relative.as_dict(kernel_vertices / row["vertices"])
         rows.append(
             {
                 **row,
-                "time_ns": t.median * ns,
-                "time_low_ns": t.low * ns,
-                "time_high_ns": t.high * ns,
+                "time_ns": t.own.median * ns,
+                "time_low_ns": t.own.low * ns,
+                "time_high_ns": t.own.high * ns,
+                "time_over_kernel": relative["median"],
+                "time_over_kernel_low": relative["low"],
+                "time_over_kernel_high": relative["high"],
+                "kernel_ns": t.calibration.median * kernel_ns,
+                "kernel_low_ns": t.calibration.low * kernel_ns,
+                "kernel_high_ns": t.calibration.high * kernel_ns,
                 "rounds": rounds,
             }
         )

@@ -3,7 +3,9 @@ rounds in rotating order, each method once per round; the median and the spread 
 
 Every round runs every method, so all methods see the same load on a shared machine, and ratios
 are taken within a round. The order rotates from round to round and runs backwards every other
-round, so every method takes every place and follows two different methods.
+round, so every method takes every place and follows two different methods. `time_calibrated`
+also times a fixed kernel beside each method, in the same turn, so that the per-round ratio of
+the two cancels what the machine's speed does between turns, rounds and runs.
 """
 
 from __future__ import annotations
@@ -14,7 +16,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 from typing import Any
 
-__all__ = ["BURST", "Timing", "ratio", "time_rounds"]
+__all__ = ["BURST", "Calibrated", "Timing", "ratio", "time_calibrated", "time_rounds"]
 
 # Calls per turn in `bench shade` and the report, the fastest counting: the first call after a
 # single-threaded method pays for waking the idle second core and, often, for fresh pages.
@@ -58,6 +60,47 @@ class Timing:
         }
 
 
+def _fastest(call: Callable[[], Any], burst: int) -> float:
+    """Seconds of the fastest of `burst` calls in a row."""
+    fastest = float("inf")
+    for _ in range(burst):
+        start = time.perf_counter()
+        call()
+        fastest = min(fastest, time.perf_counter() - start)
+    return fastest
+
+
+def _rounds(
+    turns: Mapping[str, tuple[Callable[[], Any], ...]],
+    rounds: int,
+    settle: float,
+    burst: int,
+    on_round: Callable[[], None] | None,
+) -> dict[str, list[tuple[float, ...]]]:
+    """Per name, per round, the seconds of each call of its turn (in the order given)."""
+    if rounds < 1 or burst < 1:
+        raise ValueError(f"rounds and burst must be >= 1, got {rounds} and {burst}")
+    for calls in turns.values():
+        for call in calls:
+            call()  # warm-up: first-touch of pages, thread start, compilation
+    names = list(turns)
+    times: dict[str, list[tuple[float, ...]]] = {name: [] for name in names}
+    for r in range(rounds):
+        shift = r % len(names) if names else 0
+        order = names[shift:] + names[:shift]
+        for name in order[::-1] if r % 2 else order:
+            if settle:
+                time.sleep(settle)
+            calls = turns[name]
+            # Within a turn the order flips every round too: neither call always goes first.
+            index = range(len(calls))[::-1] if r % 2 else range(len(calls))
+            seconds = {i: _fastest(calls[i], burst) for i in index}
+            times[name].append(tuple(seconds[i] for i in range(len(calls))))
+        if on_round is not None:
+            on_round()
+    return times
+
+
 def time_rounds(
     methods: Mapping[str, Callable[[], Any]],
     rounds: int,
@@ -89,27 +132,63 @@ def time_rounds(
     dict of str to Timing
         Per method, in the order given.
     """
-    if rounds < 1 or burst < 1:
-        raise ValueError(f"rounds and burst must be >= 1, got {rounds} and {burst}")
-    for call in methods.values():
-        call()  # warm-up: first-touch of pages, thread start, compilation
-    names = list(methods)
-    times: dict[str, list[float]] = {name: [] for name in names}
-    for r in range(rounds):
-        shift = r % len(names) if names else 0
-        order = names[shift:] + names[:shift]
-        for name in order[::-1] if r % 2 else order:
-            if settle:
-                time.sleep(settle)
-            fastest = float("inf")
-            for _ in range(burst):
-                start = time.perf_counter()
-                methods[name]()
-                fastest = min(fastest, time.perf_counter() - start)
-            times[name].append(fastest)
-        if on_round is not None:
-            on_round()
-    return {name: Timing(tuple(t)) for name, t in times.items()}
+    turns = {name: (call,) for name, call in methods.items()}
+    times = _rounds(turns, rounds, settle, burst, on_round)
+    return {name: Timing(tuple(t for (t,) in ts)) for name, ts in times.items()}
+
+
+@dataclass(frozen=True)
+class Calibrated:
+    """A method's rounds and those of its calibration kernel, timed in the same turns.
+
+    Attributes
+    ----------
+    own : Timing
+        The method's seconds per call, one per round.
+    calibration : Timing
+        The calibration kernel's, in the same rounds, each right beside the method's.
+    """
+
+    own: Timing
+    calibration: Timing
+
+    @property
+    def relative(self) -> Timing:
+        """The per-round ratios own / calibration: the method's time in units of the kernel's,
+        with the machine's speed in that round cancelled."""
+        return ratio(self.own, self.calibration)
+
+
+def time_calibrated(
+    methods: Mapping[str, tuple[Callable[[], Any], Callable[[], Any]]],
+    rounds: int,
+    *,
+    burst: int = 1,
+    on_round: Callable[[], None] | None = None,
+) -> dict[str, Calibrated]:
+    """Times each method and its calibration kernel in the same turn of every round.
+
+    As `time_rounds` (a warm-up, rotating rounds, the fastest of `burst` calls), but each turn
+    runs the method and then its kernel, or the kernel and then the method every other round,
+    so that both see the same state of a shared machine.
+
+    Parameters
+    ----------
+    methods : mapping of str to (callable, callable)
+        Per name: the call to time and its calibration kernel, each called with no arguments.
+    rounds, burst, on_round
+        As in `time_rounds`.
+
+    Returns
+    -------
+    dict of str to Calibrated
+        Per method, in the order given.
+    """
+    times = _rounds(methods, rounds, 0.0, burst, on_round)
+    return {
+        name: Calibrated(Timing(tuple(o for o, _ in ts)), Timing(tuple(c for _, c in ts)))
+        for name, ts in times.items()
+    }
 
 
 def ratio(baseline: Timing, own: Timing) -> Timing:
