@@ -2,9 +2,10 @@
 //! AVX2 where the CPU has them and SSE2 (or the target's baseline) elsewhere.
 //!
 //! The kernels are written once over [`Lanes`]; an [`InstructionSet`] (in [`crate::lanes`], with
-//! the register types) names the register types they are instantiated with (four registers of 16 `f32` or 8 `f64` lanes with AVX-512, 8 or 4
-//! with AVX2, 4 or 2 with SSE2), and the work runs inside a function compiled with that set's
-//! target features.
+//! the register types) names the register types they are instantiated with (a block is two
+//! registers, [`BlockLanes`]: 16 `f32` or 8 `f64` lanes each with AVX-512, 8 or 4 with AVX2, 4
+//! or 2 with SSE2), and the work runs inside a function compiled with that set's target
+//! features.
 //! Every lane runs the same IEEE operations, so every instruction set gives the same bits (a
 //! test checks it).
 //!
@@ -23,7 +24,7 @@ use crate::lanes::Portable;
 #[cfg(target_arch = "x86_64")]
 use crate::lanes::{Avx2, Avx512, Sse2};
 use crate::lanes::{InstructionSet, Lanes};
-use crate::real::Real;
+use crate::real::{BlockLanes, Real};
 
 /// The baseline set of the target.
 #[cfg(target_arch = "x86_64")]
@@ -92,7 +93,7 @@ impl Isa {
         })
     }
 
-    /// The lanes per block of `T` at this level: those of its register type, asked of it.
+    /// The lanes per block of `T` at this level ([`BlockLanes`]), asked of the register type.
     ///
     /// # Panics
     /// As [`Isa::run`].
@@ -101,7 +102,7 @@ impl Isa {
         impl<T: Real> LaneWork for Count<'_, T> {
             #[inline(always)]
             fn run<S: InstructionSet>(self) {
-                self.0.set(<T::Vector<S> as Lanes>::N);
+                self.0.set(<BlockLanes<T, S> as Lanes>::N);
             }
         }
         let lanes = Cell::new(0);

@@ -24,11 +24,12 @@ use crate::lanes::{
     MAX_LANES, V3,
 };
 use crate::material::ColorMaterialMode;
-use crate::plan::Plan;
+use crate::plan::{LightKind, Plan};
 use crate::power::{cos_pow, spot_factor, sum_exact, Scale};
 use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
+use crate::shape::{flag, General, Shape};
 
 /// The exponent of the largest eye-space normal the kernel lights as it is, 2^63 in f32 and
 /// 2^511 in f64 (|n|² ≤ 1/`MIN_POSITIVE`): Phong's R = 2(n·VP)n − VP then stays below
@@ -247,28 +248,47 @@ fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask) -> [V; 4] {
 }
 
 /// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
-/// elementary functions of tier `F`.
-pub struct Kernel<'a, T: Real, F: Tier = Full> {
+/// elementary functions of tier `F`, compiled for scenes of shape `S` (whose flags the plan
+/// must have: see [`crate::shape::fits`]).
+pub struct Kernel<'a, T: Real, F: Tier = Full, S: Shape = General> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,
     /// Which terms to compute.
     pub plan: &'a Plan,
-    /// The tier.
-    pub tier: PhantomData<F>,
+    /// The tier and the shape.
+    pub compiled: PhantomData<(F, S)>,
 }
 
-impl<'a, T: Real, F: Tier> Kernel<'a, T, F> {
-    /// The kernel of `prepared` and `plan` in tier `F`.
+impl<'a, T: Real, F: Tier, S: Shape> Kernel<'a, T, F, S> {
+    /// The kernel of `prepared` and `plan` in tier `F`, for shape `S`.
     pub fn new(prepared: &'a Prepared<T>, plan: &'a Plan) -> Self {
         Self {
             prepared,
             plan,
-            tier: PhantomData,
+            compiled: PhantomData,
         }
+    }
+
+    /// Positions are read.
+    #[inline(always)]
+    pub fn reads_positions(&self) -> bool {
+        flag(S::KNOWN.positions, self.plan.positions)
+    }
+
+    /// Sides lit: 1, or 2 with two-sided lighting.
+    #[inline(always)]
+    pub fn sides(&self) -> usize {
+        flag(S::KNOWN.sides, self.prepared.sides)
     }
 }
 
-impl<T: Real, F: Tier> Kernel<'_, T, F> {
+impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
+    /// Some light has an ambient term.
+    #[inline(always)]
+    fn any_ambient(&self) -> bool {
+        flag(S::KNOWN.light_ambient, self.plan.ambient())
+    }
+
     /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i (finite: at most
     /// 1/`MIN_POSITIVE`).
     #[inline(always)]
@@ -277,22 +297,28 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
         attenuated: bool,
         p: V3<V>,
     ) -> (V3<V>, V) {
+        let kind = S::KNOWN.light_kind;
         match light.source {
             Source::Directional { vp, spot, .. } => (V3::splat(vp), V::splat(spot)),
+            // A shape of directional lights never meets this arm (`shape::fits`).
+            Source::Positional { .. } if matches!(kind, Some(LightKind::Directional { .. })) => {
+                (V3::zero(), V::splat(T::ZERO))
+            }
             Source::Positional {
                 position,
                 attenuation: k,
                 spot,
             } => {
                 let (vp, d) = normalize_and_length_fast(V3::splat(position) - p);
-                let att = if attenuated {
+                let att = if flag(S::KNOWN.attenuated, attenuated) {
                     attenuation(k, d)
                 } else {
                     V::splat(T::ONE)
                 };
+                let cone = kind != Some(LightKind::Positional { spot: false });
                 let w = match spot {
-                    Some(s) => att * spot_factor::<V, F>(&s, -vp),
-                    None => att,
+                    Some(s) if cone => att * spot_factor::<V, F>(&s, -vp),
+                    _ => att,
                 };
                 (vp, w)
             }
@@ -314,7 +340,7 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
         if s == T::ZERO {
             return V::splat(T::ONE);
         }
-        match self.prepared.specular {
+        match flag(S::KNOWN.specular, self.prepared.specular) {
             Specular::Blinn => {
                 if let Source::Directional {
                     halfway: Some(h), ..
@@ -326,6 +352,13 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
                     }
                     let h = V3::splat(h);
                     return cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
+                }
+                // A shape whose every ĥ is constant never comes here (`shape::fits`).
+                let constant = LightKind::Directional {
+                    constant_halfway: true,
+                };
+                if S::KNOWN.light_kind == Some(constant) {
+                    return V::splat(T::ZERO);
                 }
                 let h = normalize_or_zero_fast(vp + view);
                 let power = cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
@@ -391,28 +424,29 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
         let side_plan = &plan.sides[side];
         let s = prepared.materials[side].shininess;
         let [mut ambient, mut diffuse, mut specular] = [A::zero(); 3];
+        let lit_all = S::KNOWN.lit == Some(true) && side == 0;
         for (light, lp) in lights.iter().zip(&plan.lights[first..]) {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
-            if lp.ambient {
+            if flag(S::KNOWN.light_ambient, lp.ambient) {
                 let weight = w.min(V::splat(T::SATURATION));
                 ambient = ambient.add(V3::splat(light.ambient).scale(weight));
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
-            if lp.diffuse {
+            if lit_all || lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
                 diffuse = diffuse.add(V3::splat(light.diffuse).scale(weight));
             }
-            if lp.specular && side_plan.specular {
-                let power = if side_plan.power {
+            if lit_all || (lp.specular && side_plan.specular) {
+                let power = if lit_all || side_plan.power {
                     self.specular_power(light, normal, vp, view, n_dot_vp, s)
                 } else {
                     V::splat(T::ONE)
                 };
                 // Without the gate (learnopengl) a zero normal or a light at the vertex still
                 // has no direction, so no specular.
-                let gate = if prepared.specular_gate {
+                let gate = if flag(S::KNOWN.gate, prepared.specular_gate) {
                     lit
                 } else {
                     !(normal.n.is_zero() | vp.is_zero())
@@ -440,7 +474,7 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
     ) -> [V3<V>; 3] {
         let lights = &self.prepared.lights;
         let narrow_type = std::mem::size_of::<T>() < std::mem::size_of::<f64>();
-        let sums = if lights.len() <= T::SUM_BLOCK {
+        let sums = if flag(S::KNOWN.few_lights, lights.len() <= T::SUM_BLOCK) {
             self.sums::<V, V3<V>>(lights, 0, p, normal, side, view)
         } else if narrow_type {
             self.sums::<V, Widened<V>>(lights, 0, p, normal, side, view)
@@ -464,7 +498,7 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
                 narrow(total[2], error[2]),
             ]
         };
-        let ambient = if self.plan.ambient() {
+        let ambient = if self.any_ambient() {
             sat3(sums[0])
         } else {
             sums[0]
@@ -568,10 +602,17 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
     pub fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
         let (prepared, plan) = (self.prepared, self.plan);
         let (mut p, mut n) = (input.positions, input.normals);
-        if let Some(t) = &prepared.transform {
-            n = t.normal(n);
-            if plan.positions {
-                p = t.point(p);
+        let colors = if S::KNOWN.colors == Some(false) {
+            None
+        } else {
+            input.colors
+        };
+        if S::KNOWN.transform != Some(false) {
+            if let Some(t) = &prepared.transform {
+                n = t.normal(n);
+                if self.reads_positions() {
+                    p = t.point(p);
+                }
             }
         }
         // Saturation: |N·n|² ≤ 1/MIN_POSITIVE (|N·n| ≤ 2^63 in f32, 2^511 in f64), else rescaled.
@@ -583,10 +624,10 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
             n = self.saturated_normals(&input.normals);
             n.is_finite()
         };
-        if plan.positions {
+        if self.reads_positions() {
             finite = finite & p.is_finite();
         }
-        if let Some(c) = &input.colors {
+        if let Some(c) = &colors {
             finite = finite & c[0].is_finite() & c[1].is_finite();
             finite = finite & c[2].is_finite() & c[3].is_finite();
         }
@@ -601,30 +642,31 @@ impl<T: Real, F: Tier> Kernel<'_, T, F> {
                 ..front
             }
         };
+        let local = S::KNOWN.local_viewer != Some(false);
         let view = match prepared.viewer {
             Viewer::Infinite(v) => V3::splat(v),
-            Viewer::Local(e) if plan.view => normalize_or_zero_fast(V3::splat(e) - p),
+            Viewer::Local(e) if local && plan.view => normalize_or_zero_fast(V3::splat(e) - p),
             Viewer::Local(_) => V3::zero(),
         };
         let [ambient, diffuse, specular] = self.all_sums(p, &normal, side, view);
 
-        let d = self.material(side, 1, input.colors);
+        let d = self.material(side, 1, colors);
         let alpha = d[3];
-        let (a, d) = (v3(self.material(side, 0, input.colors)), v3(d));
-        let s = v3(self.material(side, 2, input.colors));
-        let e = v3(self.material(side, 3, input.colors));
+        let (a, d) = (v3(self.material(side, 0, colors)), v3(d));
+        let s = v3(self.material(side, 2, colors));
+        let e = v3(self.material(side, 3, colors));
         let global = V3::splat(prepared.global_ambient);
         // Without an ambient term the sum is +0, and a·(+0) could only change the sign of a
         // zero, which the final clamp makes +0 anyway: the same bits without it.
         let base = e + a.mul_elements(global);
-        let base = if plan.ambient() {
+        let base = if self.any_ambient() {
             base + a.mul_elements(ambient)
         } else {
             base
         };
         let lit = base + d.mul_elements(diffuse);
         let specular = s.mul_elements(specular);
-        if prepared.separate_specular {
+        if flag(S::KNOWN.separate_specular, prepared.separate_specular) {
             [
                 emit(lit, alpha, finite),
                 emit(specular, V::splat(T::ONE), finite),

@@ -25,11 +25,6 @@ use crate::float::Float;
 /// The most lanes any implementation has: the size of the buffers that hold one block.
 pub const MAX_LANES: usize = 64;
 
-/// Four registers as one block: four independent chains of instructions for the CPU to
-/// overlap, since the polynomials of `exp` and `ln` are long chains of dependent operations
-/// (measured on Zen 5: 1.2 to 1.7 times the speed of one register with AVX-512, AVX2 and SSE2).
-pub(crate) type Quad<V> = Pair<Pair<V>>;
-
 /// The register types of one instruction set.
 pub trait InstructionSet {
     /// Lanes of `f32`.
@@ -44,8 +39,8 @@ pub(crate) struct Sse2;
 
 #[cfg(target_arch = "x86_64")]
 impl InstructionSet for Sse2 {
-    type F32 = Quad<x86::F32x4>;
-    type F64 = Quad<x86::F64x2>;
+    type F32 = x86::F32x4;
+    type F64 = x86::F64x2;
 }
 
 /// AVX2 with FMA.
@@ -54,8 +49,8 @@ pub(crate) struct Avx2;
 
 #[cfg(target_arch = "x86_64")]
 impl InstructionSet for Avx2 {
-    type F32 = Quad<x86::F32x8>;
-    type F64 = Quad<x86::F64x4>;
+    type F32 = x86::F32x8;
+    type F64 = x86::F64x4;
 }
 
 /// AVX-512 F, BW, DQ and VL.
@@ -64,8 +59,8 @@ pub(crate) struct Avx512;
 
 #[cfg(target_arch = "x86_64")]
 impl InstructionSet for Avx512 {
-    type F32 = Quad<x86::F32x16>;
-    type F64 = Quad<x86::F64x8>;
+    type F32 = x86::F32x16;
+    type F64 = x86::F64x8;
 }
 
 /// Arrays for other CPUs, which LLVM vectorises as it can.

@@ -54,6 +54,9 @@ mod render;
 mod robust_tests;
 mod scene;
 mod shade;
+mod shape;
+#[cfg(test)]
+mod shape_tests;
 #[cfg(test)]
 mod specialisation_tests;
 mod stop;

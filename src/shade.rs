@@ -5,6 +5,7 @@
 //! CPU has ([`crate::dispatch`]). Every row is computed independently of every other, so the
 //! result does not depend on the number of threads or the instruction set.
 
+use std::marker::PhantomData;
 use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
@@ -20,8 +21,9 @@ use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 use crate::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::real::Real;
+use crate::real::{BlockLanes, Real};
 use crate::scene::{Scene, ValidScene};
+use crate::shape::{on_shape, OnShape, Shape};
 use crate::stop::Stop;
 
 pub use crate::kernel::VertexColors;
@@ -71,14 +73,14 @@ pub(crate) trait BlockShader<T: Real>: Sync {
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V>;
 }
 
-impl<T: Real, F: Tier> BlockShader<T> for Kernel<'_, T, F> {
+impl<T: Real, F: Tier, S: Shape> BlockShader<T> for Kernel<'_, T, F, S> {
     #[inline(always)]
     fn reads_positions(&self) -> bool {
-        self.plan.positions
+        Kernel::reads_positions(self)
     }
     #[inline(always)]
     fn sides(&self) -> usize {
-        self.prepared.sides
+        Kernel::sides(self)
     }
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
@@ -166,7 +168,7 @@ impl<T: Real, S: BlockShader<T>> Task<'_, '_, T, S> {
 impl<T: Real, S: BlockShader<T>> LaneWork for Task<'_, '_, T, S> {
     #[inline(always)]
     fn run<I: InstructionSet>(self) {
-        self.blocks::<T::Vector<I>>();
+        self.blocks::<BlockLanes<T, I>>();
     }
 }
 
@@ -175,14 +177,17 @@ impl<T: Real, S: BlockShader<T>> Task<'_, '_, T, S> {
     #[inline(always)]
     fn blocks<V: Lanes<T = T>>(self) {
         let count = self.planes[0].len() / 4;
-        let per_side = self.planes.len() / self.kernel.sides();
+        let sides = self.kernel.sides();
+        let per_side = self.planes.len() / sides;
         let mut start = 0;
         while start < count {
             let valid = V::N.min(count - start);
             let block = self.load::<V>(self.first + start, valid);
-            // Planes come side by side: the front's colours, then the back's.
-            for (side, planes) in self.planes.chunks_mut(per_side).enumerate() {
+            // Planes come side by side: the front's colours, then the back's. A loop over a
+            // count the shape may fix, so one side compiles to straight code.
+            for side in 0..sides {
                 let colours = self.kernel.block(&block, side);
+                let planes = &mut self.planes[side * per_side..(side + 1) * per_side];
                 for (plane, rgba) in planes.iter_mut().zip(colours) {
                     store(rgba, plane, start, valid);
                 }
@@ -370,22 +375,47 @@ pub(crate) fn run<T: Real>(
         colors,
     };
     if prepared.accuracy == Accuracy::Display {
-        run_tier(
-            &Kernel::<T, Display>::new(prepared, plan),
-            isa,
-            inputs,
-            out,
-            stop,
-        )
+        run_shaped::<T, Display>(prepared, plan, isa, inputs, out, stop)
     } else {
-        run_tier(
-            &Kernel::<T, Full>::new(prepared, plan),
-            isa,
-            inputs,
-            out,
-            stop,
-        )
+        run_shaped::<T, Full>(prepared, plan, isa, inputs, out, stop)
     }
+}
+
+/// [`run`] in tier `F`, with the kernel compiled for the call's shape of scene.
+fn run_shaped<T: Real, F: Tier>(
+    prepared: &Prepared<T>,
+    plan: &Plan,
+    isa: Isa,
+    inputs: Inputs<'_, T>,
+    out: &mut [MaybeUninit<T>],
+    stop: &Stop,
+) -> Result<(), Error> {
+    struct Run<'a, 'b, T: Real, F> {
+        prepared: &'a Prepared<T>,
+        plan: &'a Plan,
+        isa: Isa,
+        inputs: Inputs<'a, T>,
+        out: &'b mut [MaybeUninit<T>],
+        stop: &'a Stop,
+        tier: PhantomData<F>,
+    }
+    impl<T: Real, F: Tier> OnShape for Run<'_, '_, T, F> {
+        type Output = Result<(), Error>;
+        fn call<S: Shape>(self) -> Self::Output {
+            let kernel = Kernel::<T, F, S>::new(self.prepared, self.plan);
+            run_tier(&kernel, self.isa, self.inputs, self.out, self.stop)
+        }
+    }
+    let work = Run::<T, F> {
+        prepared,
+        plan,
+        isa,
+        inputs,
+        out,
+        stop,
+        tier: PhantomData,
+    };
+    on_shape(plan, prepared, work)
 }
 
 /// [`run`] with the kernel of one tier, or any other [`BlockShader`].
@@ -439,15 +469,14 @@ pub(crate) fn run_tier<T: Real, S: BlockShader<T>>(
 pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
-    let (bytes, lanes, plan) = if exact || std::mem::size_of::<T>() == 8 {
-        let plan = Plan::new(&Prepared::<f64>::new(scene, options)?);
-        (8, isa.lanes::<f64>(), plan)
+    let (bytes, (shape, lanes), plan) = if exact || std::mem::size_of::<T>() == 8 {
+        let prepared = Prepared::<f64>::new(scene, options)?;
+        let plan = Plan::new(&prepared);
+        (8, shape_of(&plan, &prepared, isa), plan)
     } else {
-        (
-            4,
-            isa.lanes::<f32>(),
-            Plan::new(&Prepared::<T>::new(scene, options)?),
-        )
+        let prepared = Prepared::<T>::new(scene, options)?;
+        let plan = Plan::new(&prepared);
+        (4, shape_of(&plan, &prepared, isa), plan)
     };
     let mode = match options.accuracy {
         Accuracy::Fast => "fast",
@@ -455,10 +484,22 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
         Accuracy::Display => Display::NAME,
     };
     Ok(format!(
-        "{mode}: float{} arithmetic, {}, {lanes} vertices per block; {plan}",
+        "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; {plan}",
         bytes * 8,
         isa.name(),
     ))
+}
+
+/// The name of the shape whose kernel runs `plan`, and its lanes per block with `isa`.
+fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static str, usize) {
+    struct Name<T>(Isa, PhantomData<T>);
+    impl<T: Real> OnShape for Name<T> {
+        type Output = (&'static str, usize);
+        fn call<S: Shape>(self) -> Self::Output {
+            (S::NAME, self.0.lanes::<T>())
+        }
+    }
+    on_shape(plan, prepared, Name::<T>(isa, PhantomData))
 }
 
 #[cfg(test)]

@@ -150,7 +150,7 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
 /// Vertices around the lights: random rows, and the awkward ones (a zero normal, a non-unit
 /// normal, a vertex at a light, NaN rows), 165 in all: two full blocks of the widest registers
 /// (64 lanes) and a short one.
-fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
+pub(crate) fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
     let mut numbers = Numbers(7);
     let mut positions: Vec<[f64; 3]> = (0..VERTICES).map(|_| numbers.vec3(2.0)).collect();
     let mut normals: Vec<[f64; 3]> = (0..VERTICES).map(|_| numbers.vec3(1.0)).collect();

@@ -1,0 +1,270 @@
+//! The kernels compiled for a shape of scene ([`crate::shape`]) against the general kernel, bit
+//! for bit, on scenes of each shape, every instruction set, both tiers and both types; and
+//! [`fits`] refusing every feature a shape fixes otherwise.
+
+use glam::DMat4;
+
+use crate::dispatch::Isa;
+use crate::display::Display;
+use crate::elementary::{Full, Tier};
+use crate::kernel::Kernel;
+use crate::light::Light;
+use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::plan::Plan;
+use crate::prepare::{Prepared, ShadeOptions};
+use crate::real::Real;
+use crate::scene::{Scene, Specular};
+use crate::shade::{as_uninit, run_tier, Inputs};
+use crate::shape::{fits, Directional, General, Known, Mixed, Point, Shape};
+use crate::specialisation_tests::vertices;
+use crate::stop::Stop;
+
+/// Lights of every kind the mixed shape takes: directional, attenuated point, spot, one with
+/// an ambient term (the benchmark's eight, in short).
+fn mixed_lights() -> Vec<Light> {
+    vec![
+        Light {
+            position: [0.3, 0.5, 1.0, 0.0],
+            ..Light::default()
+        },
+        Light {
+            position: [1.0, 2.0, 1.0, 1.0],
+            linear_attenuation: 0.3,
+            ..Light::default()
+        },
+        Light {
+            position: [0.25, -0.5, 1.5, 0.5],
+            spot_cutoff: 60.0,
+            spot_direction: [-0.5, -1.0, -0.5],
+            spot_exponent: 3.0,
+            quadratic_attenuation: 0.2,
+            ambient: [0.1, 0.05, 0.2, 1.0],
+            ..Light::default()
+        },
+    ]
+}
+
+/// A scene of each shape: (lights, viewer).
+fn shaped_scenes() -> Vec<(&'static str, Known, Scene)> {
+    let material = Material {
+        specular: [0.6, 0.5, 0.4, 1.0],
+        shininess: 20.0,
+        emission: [0.05, 0.0, 0.1, 1.0],
+        ..Material::default()
+    };
+    let scene = |lights: Vec<Light>, viewer: [f64; 4]| Scene {
+        lights,
+        material,
+        viewer,
+        ..Scene::default()
+    };
+    let directional = vec![
+        Light {
+            position: [0.3, 0.5, 1.0, 0.0],
+            ..Light::default()
+        },
+        Light {
+            position: [-1.0, 0.2, 0.4, 0.0],
+            spot_cutoff: 80.0,
+            diffuse: [0.5, 0.3, 0.2, 1.0],
+            ..Light::default()
+        },
+    ];
+    let point = vec![
+        Light {
+            position: [1.0, 2.0, 1.0, 1.0],
+            ..Light::default()
+        },
+        Light {
+            position: [0.25, -0.5, 1.5, 0.5],
+            constant_attenuation: 0.5,
+            linear_attenuation: 0.3,
+            quadratic_attenuation: 0.2,
+            ..Light::default()
+        },
+    ];
+    let local = [0.5, 0.0, 2.0, 1.0];
+    vec![
+        (
+            "directional",
+            Directional::KNOWN,
+            scene(directional, [0.0, 0.0, 1.0, 0.0]),
+        ),
+        ("point", Point::KNOWN, scene(point, local)),
+        ("mixed", Mixed::KNOWN, scene(mixed_lights(), local)),
+    ]
+}
+
+/// The output bits of the kernel of shape `S` on `scene` with `isa` in tier `F`.
+fn bits<T: Real, F: Tier, S: Shape>(scene: &Scene, options: &ShadeOptions, isa: Isa) -> Vec<u64> {
+    let scene = scene.clone().validated().unwrap();
+    let (positions, normals, _) = vertices::<T>();
+    let prepared = Prepared::<T>::new(&scene, options).unwrap();
+    let plan = Plan::new(&prepared);
+    let inputs = Inputs {
+        positions: &positions,
+        normals: &normals,
+        colors: None,
+    };
+    let mut out = vec![T::ZERO; 4 * normals.len()];
+    let kernel = Kernel::<T, F, S>::new(&prepared, &plan);
+    run_tier(&kernel, isa, inputs, as_uninit(&mut out), &Stop::new()).unwrap();
+    out.iter().map(|x| x.to_f64().to_bits()).collect()
+}
+
+fn check<T: Real, F: Tier>() {
+    for (name, known, scene) in shaped_scenes() {
+        for normalize in [false, true] {
+            let options = ShadeOptions {
+                normalize,
+                ..ShadeOptions::default()
+            };
+            let prepared =
+                Prepared::<T>::new(&scene.clone().validated().unwrap(), &options).unwrap();
+            assert!(
+                fits(&known, &Plan::new(&prepared), &prepared),
+                "{name} fits"
+            );
+            for isa in Isa::ALL.into_iter().filter(|i| i.supported()) {
+                let general = bits::<T, F, General>(&scene, &options, isa);
+                let shaped = match name {
+                    "directional" => bits::<T, F, Directional>(&scene, &options, isa),
+                    "point" => bits::<T, F, Point>(&scene, &options, isa),
+                    _ => bits::<T, F, Mixed>(&scene, &options, isa),
+                };
+                assert!(
+                    shaped == general,
+                    "{name}, normalize {normalize}, {}",
+                    isa.name()
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn shaped_kernels_match_the_general_one_bit_for_bit() {
+    check::<f32, Full>();
+    check::<f32, Display>();
+    check::<f64, Full>();
+    check::<f64, Display>();
+}
+
+#[test]
+fn a_shape_fits_only_scenes_with_every_flag_it_fixes() {
+    let (_, _, base) = shaped_scenes().pop().unwrap();
+    let fits_mixed = |scene: &Scene, options: &ShadeOptions| {
+        let prepared = Prepared::<f32>::new(&scene.clone().validated().unwrap(), options).unwrap();
+        fits(&Mixed::KNOWN, &Plan::new(&prepared), &prepared)
+    };
+    let plain = ShadeOptions::default();
+    assert!(fits_mixed(&base, &plain));
+    let changed: Vec<(&str, Scene, ShadeOptions)> = vec![
+        (
+            "two-sided",
+            Scene {
+                two_side: true,
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "Phong",
+            Scene {
+                specular: Specular::Phong,
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "no gate",
+            Scene {
+                specular_gate: false,
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "separate specular",
+            Scene {
+                separate_specular: true,
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "infinite viewer",
+            Scene {
+                viewer: [0.0, 0.0, 1.0, 0.0],
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "no shininess",
+            Scene {
+                material: Material {
+                    shininess: 0.0,
+                    ..base.material
+                },
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "nine lights",
+            Scene {
+                lights: [mixed_lights(), mixed_lights(), mixed_lights()].concat(),
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "a light without specular",
+            Scene {
+                lights: vec![Light {
+                    specular: [0.0; 4],
+                    ..Light::default()
+                }],
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "modelview",
+            base.clone(),
+            ShadeOptions {
+                modelview: Some(DMat4::from_scale(glam::DVec3::splat(2.0))),
+                ..plain
+            },
+        ),
+        (
+            "colour material",
+            base.clone(),
+            ShadeOptions {
+                color_material: Some(ColorMaterial {
+                    mode: ColorMaterialMode::Diffuse,
+                    face: Face::FrontAndBack,
+                }),
+                ..plain
+            },
+        ),
+    ];
+    for (what, scene, options) in changed {
+        assert!(!fits_mixed(&scene, &options), "{what}");
+    }
+    // The narrower shapes refuse what they do not take.
+    let (_, _, directional) = shaped_scenes().remove(0);
+    let prepared = Prepared::<f32>::new(&base.validated().unwrap(), &plain).unwrap();
+    assert!(!fits(&Directional::KNOWN, &Plan::new(&prepared), &prepared));
+    assert!(!fits(&Point::KNOWN, &Plan::new(&prepared), &prepared));
+    let ambient = Scene {
+        lights: vec![Light {
+            ambient: [0.1, 0.1, 0.1, 1.0],
+            ..directional.lights[0]
+        }],
+        ..directional
+    };
+    let prepared = Prepared::<f32>::new(&ambient.validated().unwrap(), &plain).unwrap();
+    assert!(!fits(&Directional::KNOWN, &Plan::new(&prepared), &prepared));
+}
