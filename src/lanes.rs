@@ -25,12 +25,20 @@ use crate::float::Float;
 /// The most lanes any implementation has: the size of the buffers that hold one block.
 pub const MAX_LANES: usize = 64;
 
+/// Four registers as one block: four chains for the CPU to overlap where a register is
+/// narrow and a block's values spill anyway.
+pub(crate) type Quad<V> = Pair<Pair<V>>;
+
 /// The register types of one instruction set.
 pub trait InstructionSet {
     /// Lanes of `f32`.
     type F32: Lanes<T = f32>;
     /// Lanes of `f64`.
     type F64: Lanes<T = f64>;
+    /// The lanes of one block of the kernel made of registers `V`: as many registers as give
+    /// the polynomials of `exp` and `ln` independent chains to overlap without holding more
+    /// values than the registers.
+    type Block<V: Lanes>: Lanes<T = V::T>;
 }
 
 /// SSE2, the x86-64 baseline.
@@ -41,6 +49,7 @@ pub(crate) struct Sse2;
 impl InstructionSet for Sse2 {
     type F32 = x86::F32x4;
     type F64 = x86::F64x2;
+    type Block<V: Lanes> = Quad<V>;
 }
 
 /// AVX2 with FMA.
@@ -51,6 +60,7 @@ pub(crate) struct Avx2;
 impl InstructionSet for Avx2 {
     type F32 = x86::F32x8;
     type F64 = x86::F64x4;
+    type Block<V: Lanes> = Quad<V>;
 }
 
 /// AVX-512 F, BW, DQ and VL.
@@ -61,6 +71,7 @@ pub(crate) struct Avx512;
 impl InstructionSet for Avx512 {
     type F32 = x86::F32x16;
     type F64 = x86::F64x8;
+    type Block<V: Lanes> = Pair<V>;
 }
 
 /// Arrays for other CPUs, which LLVM vectorises as it can.
@@ -70,6 +81,7 @@ pub(crate) struct Portable;
 impl InstructionSet for Portable {
     type F32 = Pack<f32, 8>;
     type F64 = Pack<f64, 4>;
+    type Block<V: Lanes> = Pair<V>;
 }
 
 /// One lane: the kernel's formulas applied to single values (the per-call constants).
@@ -78,6 +90,7 @@ pub(crate) struct Scalar;
 impl InstructionSet for Scalar {
     type F32 = Pack<f32, 1>;
     type F64 = Pack<f64, 1>;
+    type Block<V: Lanes> = V;
 }
 
 /// The result of a lane-wise comparison.

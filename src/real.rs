@@ -9,7 +9,7 @@
 
 use crate::elementary::Elementary;
 use crate::float::{Float, Vector3};
-use crate::lanes::{InstructionSet, Lanes, Pair, Scalar, V3};
+use crate::lanes::{InstructionSet, Lanes, Scalar, V3};
 
 /// A floating-point type the kernels compute in, `f32` or `f64`, with its lanes.
 pub trait Real: Float + Elementary {
@@ -17,12 +17,11 @@ pub trait Real: Float + Elementary {
     type Vector<S: InstructionSet>: Lanes<T = Self>;
 }
 
-/// The lanes of one block of `T` under instruction set `S`: two registers, two independent
-/// chains for the CPU to overlap (the polynomials of `exp` and `ln` are long chains of dependent
-/// operations), and few enough values to stay in registers (measured with AVX-512 on Zen 5,
-/// 2026-12-02: 1.2 to 1.4 times the speed of one register in the shapes' kernels; the general
-/// kernel as fast as with four, in half the code).
-pub type BlockLanes<T, S> = Pair<<T as Real>::Vector<S>>;
+/// The lanes of one block of `T` under instruction set `S` ([`InstructionSet::Block`]): two
+/// registers with AVX-512, four with AVX2 and SSE2 (measured on Zen 5, 2026-12-02, one thread:
+/// with AVX-512 two ran 1.2 to 1.4 times as fast as one in the shapes' kernels and as fast as
+/// four in the general one, in half the code; with AVX2 four kept 8 lights 10 to 15% ahead).
+pub type BlockLanes<T, S> = <S as InstructionSet>::Block<<T as Real>::Vector<S>>;
 
 impl Real for f32 {
     type Vector<S: InstructionSet> = S::F32;
