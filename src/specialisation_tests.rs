@@ -20,7 +20,7 @@ use crate::stop::Stop;
 
 const FEATURES: u32 = 14;
 
-/// Vertices per subset: more than two blocks of 64.
+/// Vertices per subset: five full blocks of the widest kind (32 lanes) and a short one.
 const VERTICES: usize = 165;
 
 /// A deterministic stream of numbers in [-1, 1) (a 64-bit LCG; no dependency).
@@ -148,8 +148,8 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
 }
 
 /// Vertices around the lights: random rows, and the awkward ones (a zero normal, a non-unit
-/// normal, a vertex at a light, NaN rows), 165 in all: two full blocks of the widest registers
-/// (64 lanes) and a short one.
+/// normal, a vertex at a light, NaN rows), 165 in all: five full blocks of the widest kind (32
+/// lanes) and a short one.
 pub(crate) fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
     let mut numbers = Numbers(7);
     let mut positions: Vec<[f64; 3]> = (0..VERTICES).map(|_| numbers.vec3(2.0)).collect();
