@@ -1,11 +1,11 @@
 //! Kernels compiled for one shape of scene: the same kernel ([`crate::kernel`]) with some of
 //! the plan's flags fixed when it is compiled, so the compiler drops the terms the shape cannot
-//! have and the branches around the others, and keeps a block's values in registers.
+//! have and the branches around the others, and more of a block's values stay in registers.
 //!
 //! A flag the shape leaves open (`None`) is read from the plan once per block, as in the
 //! general kernel. A call runs a shape's kernel only when its plan and scene have every fixed
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
-//! (`specialisation_tests` checks it).
+//! (`shape_tests` checks it).
 
 use crate::plan::{LightKind, Plan};
 use crate::prepare::{Prepared, Viewer};
