@@ -125,6 +125,23 @@ impl Isa {
             _ => work.run::<Baseline>(),
         }
     }
+
+    /// Runs `work` with the registers of this level, which must be AVX2 or AVX-512: `work` is
+    /// compiled for those two only (the shapes' kernels, which the baseline runs as the general
+    /// kernel), so the baseline's registers never instantiate it.
+    ///
+    /// # Panics
+    /// If the CPU does not support the level, or the level is the baseline.
+    pub fn run_wide<W: LaneWork>(self, work: W) {
+        assert!(self.supported(), "{} is not supported here", self.name());
+        match self {
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx512 => unsafe { avx512(work) },
+            #[cfg(target_arch = "x86_64")]
+            Isa::Avx2 => unsafe { avx2(work) },
+            _ => panic!("run_wide needs AVX2 or AVX-512, got {}", self.name()),
+        }
+    }
 }
 
 /// Defines, from one list of target features, the function that runs a [`LaneWork`] compiled

@@ -71,6 +71,10 @@ pub(crate) trait BlockShader<T: Real>: Sync {
     fn sides(&self) -> usize;
     /// The colours of one side of a block; must be `#[inline(always)]`.
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V>;
+    /// Runs `work` (a task of this shader) with the registers of `isa`.
+    fn dispatch<W: LaneWork>(isa: Isa, work: W) {
+        isa.run(work);
+    }
 }
 
 impl<T: Real, F: Tier, S: Shape> BlockShader<T> for Kernel<'_, T, F, S> {
@@ -85,6 +89,9 @@ impl<T: Real, F: Tier, S: Shape> BlockShader<T> for Kernel<'_, T, F, S> {
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
         Kernel::block(self, input, side)
+    }
+    fn dispatch<W: LaneWork>(isa: Isa, work: W) {
+        S::run(isa, work);
     }
 }
 
@@ -415,7 +422,7 @@ fn run_shaped<T: Real, F: Tier>(
         stop,
         tier: PhantomData,
     };
-    on_shape(plan, prepared, work)
+    on_shape(plan, prepared, isa, work)
 }
 
 /// [`run`] with the kernel of one tier, or any other [`BlockShader`].
@@ -451,7 +458,7 @@ pub(crate) fn run_tier<T: Real, S: BlockShader<T>>(
             first: t * ROWS_PER_TASK,
             planes: &mut planes,
         };
-        isa.run(task);
+        S::dispatch(isa, task);
     };
     if tasks.len() == 1 {
         tasks.into_iter().enumerate().for_each(work);
@@ -499,7 +506,7 @@ fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static
             (S::NAME, self.0.lanes::<T>())
         }
     }
-    on_shape(plan, prepared, Name::<T>(isa, PhantomData))
+    on_shape(plan, prepared, isa, Name::<T>(isa, PhantomData))
 }
 
 #[cfg(test)]

@@ -7,6 +7,7 @@
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
 //! (`shape_tests` checks it).
 
+use crate::dispatch::{Isa, LaneWork};
 use crate::plan::{LightKind, Plan};
 use crate::prepare::{Prepared, Viewer};
 use crate::real::Real;
@@ -118,15 +119,31 @@ pub fn fits<T: Real>(known: &Known, plan: &Plan, prepared: &Prepared<T>) -> bool
         && same(known.few_lights, prepared.lights.len() <= T::SUM_BLOCK)
 }
 
-/// A shape of scene: the flags it fixes.
+/// A shape of scene: the flags it fixes, and the instruction sets its kernel is compiled for.
 pub trait Shape: Sync + 'static {
     /// The name `Scene.plan` prints.
     const NAME: &'static str;
     /// The flags fixed.
     const KNOWN: Known;
+    /// Runs `work` (this shape's kernel) with the registers of `isa`, one the shape is
+    /// compiled for.
+    fn run<W: LaneWork>(isa: Isa, work: W);
 }
 
-/// Defines the shapes, each a unit type with its flags.
+/// Any scene, on every instruction set.
+pub struct General;
+
+impl Shape for General {
+    const NAME: &'static str = "general";
+    const KNOWN: Known = Known::NOTHING;
+    #[inline(always)]
+    fn run<W: LaneWork>(isa: Isa, work: W) {
+        isa.run(work);
+    }
+}
+
+/// Defines the narrower shapes, each a unit type with its flags, compiled for AVX2 and
+/// AVX-512 only: the baseline, a fallback for old CPUs, runs the general kernel.
 macro_rules! shapes {
     ($($(#[$doc:meta])* $name:ident($label:literal) = $known:expr;)*) => {$(
         $(#[$doc])*
@@ -135,13 +152,15 @@ macro_rules! shapes {
         impl Shape for $name {
             const NAME: &'static str = $label;
             const KNOWN: Known = $known;
+            #[inline(always)]
+            fn run<W: LaneWork>(isa: Isa, work: W) {
+                isa.run_wide(work);
+            }
         }
     )*};
 }
 
 shapes! {
-    /// Any scene.
-    General("general") = Known::NOTHING;
     /// [`Known::PLAIN`] with directional lights (ĥ constant) and an infinite viewer: the
     /// normals are the only per-vertex input.
     Directional("directional") = Known {
@@ -175,9 +194,16 @@ pub trait OnShape {
 }
 
 /// Does `work` with the first shape whose flags the call has ([`Directional`], [`Point`],
-/// [`Mixed`]), or with [`General`].
-pub fn on_shape<T: Real, W: OnShape>(plan: &Plan, prepared: &Prepared<T>, work: W) -> W::Output {
-    if fits(&Directional::KNOWN, plan, prepared) {
+/// [`Mixed`]) and whose kernel `isa` runs, or with [`General`].
+pub fn on_shape<T: Real, W: OnShape>(
+    plan: &Plan,
+    prepared: &Prepared<T>,
+    isa: Isa,
+    work: W,
+) -> W::Output {
+    if isa == Isa::Baseline {
+        work.call::<General>()
+    } else if fits(&Directional::KNOWN, plan, prepared) {
         work.call::<Directional>()
     } else if fits(&Point::KNOWN, plan, prepared) {
         work.call::<Point>()

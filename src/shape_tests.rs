@@ -15,7 +15,7 @@ use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run_tier, Inputs};
-use crate::shape::{fits, Directional, General, Known, Mixed, Point, Shape};
+use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};
 use crate::specialisation_tests::vertices;
 use crate::stop::Stop;
 
@@ -125,7 +125,11 @@ fn check<T: Real, F: Tier>() {
                 fits(&known, &Plan::new(&prepared), &prepared),
                 "{name} fits"
             );
-            for isa in Isa::ALL.into_iter().filter(|i| i.supported()) {
+            // The shapes are compiled for AVX2 and AVX-512; the baseline runs the general kernel.
+            for isa in Isa::ALL
+                .into_iter()
+                .filter(|i| i.supported() && *i != Isa::Baseline)
+            {
                 let general = bits::<T, F, General>(&scene, &options, isa);
                 let shaped = match name {
                     "directional" => bits::<T, F, Directional>(&scene, &options, isa),
@@ -267,4 +271,24 @@ fn a_shape_fits_only_scenes_with_every_flag_it_fixes() {
     };
     let prepared = Prepared::<f32>::new(&ambient.validated().unwrap(), &plain).unwrap();
     assert!(!fits(&Directional::KNOWN, &Plan::new(&prepared), &prepared));
+}
+
+#[test]
+fn the_baseline_runs_the_general_kernel() {
+    struct Name;
+    impl OnShape for Name {
+        type Output = &'static str;
+        fn call<S: Shape>(self) -> Self::Output {
+            S::NAME
+        }
+    }
+    let options = ShadeOptions::default();
+    for (name, _, scene) in shaped_scenes() {
+        let prepared = Prepared::<f32>::new(&scene.validated().unwrap(), &options).unwrap();
+        let plan = Plan::new(&prepared);
+        assert_eq!(on_shape(&plan, &prepared, Isa::Baseline, Name), "general");
+        for isa in [Isa::Avx2, Isa::Avx512] {
+            assert_eq!(on_shape(&plan, &prepared, isa, Name), name);
+        }
+    }
 }
