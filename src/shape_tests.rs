@@ -1,5 +1,6 @@
 //! The kernels compiled for a shape of scene ([`crate::shape`]) against the general kernel, bit
-//! for bit, on scenes of each shape, every instruction set, both tiers and both types; and
+//! for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2, AVX-512),
+//! both tiers and both types; the baseline choosing the general kernel; and
 //! [`fits`] refusing every feature a shape fixes otherwise.
 
 use glam::DMat4;
@@ -44,7 +45,7 @@ fn mixed_lights() -> Vec<Light> {
     ]
 }
 
-/// A scene of each shape: (lights, viewer).
+/// A scene of each shape: (the shape's name, its flags, the scene).
 fn shaped_scenes() -> Vec<(&'static str, Known, Scene)> {
     let material = Material {
         specular: [0.6, 0.5, 0.4, 1.0],
@@ -112,6 +113,8 @@ fn bits<T: Real, F: Tier, S: Shape>(scene: &Scene, options: &ShadeOptions, isa: 
     out.iter().map(|x| x.to_f64().to_bits()).collect()
 }
 
+/// Each shape's scene, with and without `normalize`, fits its shape and gives the general
+/// kernel's bits on every instruction set the shape is compiled for, in tier `F` and type `T`.
 fn check<T: Real, F: Tier>() {
     for (name, known, scene) in shaped_scenes() {
         for normalize in [false, true] {
