@@ -116,13 +116,10 @@ impl Isa {
     /// If the CPU does not support the level (callers pass [`Isa::detect`] or a level whose
     /// [`Isa::supported`] they checked).
     pub fn run<W: LaneWork>(self, work: W) {
-        assert!(self.supported(), "{} is not supported here", self.name());
-        match self {
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx512 => unsafe { avx512(work) },
-            #[cfg(target_arch = "x86_64")]
-            Isa::Avx2 => unsafe { avx2(work) },
-            _ => work.run::<Baseline>(),
+        if self == Isa::Baseline {
+            work.run::<Baseline>();
+        } else {
+            self.run_wide(work);
         }
     }
 
