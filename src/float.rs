@@ -124,6 +124,9 @@ pub trait Float:
     /// Square root.
     #[must_use]
     fn sqrt(self) -> Self;
+    /// `self · a + b` rounded once (IEEE fusedMultiplyAdd; in software where the CPU has none).
+    #[must_use]
+    fn mul_add(self, a: Self, b: Self) -> Self;
     /// Veltkamp's splitter 2^⌈p/2⌉ + 1 (4097 in f32, 2^27 + 1 in f64): `c = x·SPLIT`,
     /// `hi = c − (c − x)` leaves half the significand in `hi`, so products of halves are exact.
     const SPLIT: Self;
@@ -142,6 +145,10 @@ macro_rules! impl_float_common {
         #[inline]
         fn sqrt(self) -> Self {
             self.sqrt()
+        }
+        #[inline]
+        fn mul_add(self, a: Self, b: Self) -> Self {
+            self.mul_add(a, b)
         }
         #[inline]
         fn min(self, other: Self) -> Self {

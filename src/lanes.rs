@@ -4,13 +4,16 @@
 //! the registers of each instruction set ([`x86`]: SSE2, AVX2, AVX-512) and plain arrays
 //! ([`Pack`], for other CPUs and for one-lane evaluation); an [`InstructionSet`] names the
 //! register type of `f32` and of `f64` in each (`crate::dispatch` picks one at run time). The
-//! kernel and the elementary functions are written once against the trait. Only IEEE basic operations (+, −, ×, ÷, √,
-//! comparisons, selects, integer operations on the bits) are offered, so every implementation
-//! gives the same bits; the one fused multiply-add ([`Lanes::square_error`]) computes an exact
-//! quantity, which the instruction sets without it compute exactly another way.
+//! kernel and the elementary functions are written once against the trait. Only IEEE basic
+//! operations (+, −, ×, ÷, √, the fused multiply-add, comparisons, selects, integer operations
+//! on the bits) are offered, so every implementation gives the same bits: the fused
+//! multiply-add ([`Lanes::mul_add`], and [`Lanes::square_error`], an exact quantity) is one
+//! instruction with AVX2 and AVX-512, and computed exactly another way elsewhere.
 
 mod pair;
 mod portable;
+#[cfg(target_arch = "x86_64")]
+mod sse2_fma;
 #[cfg(target_arch = "x86_64")]
 pub(crate) mod x86;
 
@@ -177,6 +180,24 @@ pub trait Lanes:
     /// Rounded back from `f64`.
     fn narrow(w: Self::Wide) -> Self;
 
+    /// `self · a + b` lane by lane, rounded once (a fused multiply-add): one instruction with
+    /// AVX2 and AVX-512, the same value computed exactly elsewhere, so every instruction set
+    /// gives the same bits. This default goes lane by lane through [`Float::mul_add`].
+    #[inline(always)]
+    #[must_use]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        let mut v = [[Self::T::ZERO; MAX_LANES]; 3];
+        for (values, lanes) in v.iter_mut().zip([self, a, b]) {
+            lanes.store(values);
+        }
+        let [x, y, z] = v;
+        let mut out = [Self::T::ZERO; MAX_LANES];
+        for (i, o) in out.iter_mut().enumerate().take(Self::N) {
+            *o = x[i].mul_add(y[i], z[i]);
+        }
+        Self::load(&out)
+    }
+
     /// `x·x − square` for `square` = x·x rounded: the rounding error of the square, exact
     /// wherever x·x neither over- nor underflows. Veltkamp's split and Dekker's product here;
     /// a fused multiply-add where the CPU has one (the same exact value).
@@ -298,10 +319,21 @@ impl<V: Lanes> V3<V> {
         [self.x.lane(i), self.y.lane(i), self.z.lane(i)]
     }
 
-    /// The dot product `(x·x' + y·y') + z·z'`, in glam's order.
+    /// The dot product `(x·x' + y·y') + z·z'`, in glam's order, unfused: `glshade.glsl` forms
+    /// it the same way on GPUs, which need not fuse (llvmpipe does not).
     #[inline(always)]
     pub fn dot(self, o: Self) -> V {
         self.x * o.x + self.y * o.y + self.z * o.z
+    }
+
+    /// `self ⊙ o + c`, each component rounded once.
+    #[inline(always)]
+    pub fn mul_add(self, o: Self, c: Self) -> Self {
+        Self {
+            x: self.x.mul_add(o.x, c.x),
+            y: self.y.mul_add(o.y, c.y),
+            z: self.z.mul_add(o.z, c.z),
+        }
     }
 
     /// Every component times `s`.

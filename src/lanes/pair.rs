@@ -96,6 +96,10 @@ impl<V: Lanes> Lanes for Pair<V> {
         self.1.store(&mut dst[V::N..]);
     }
     #[inline(always)]
+    fn mul_add(self, a: Self, b: Self) -> Self {
+        Pair(self.0.mul_add(a.0, b.0), self.1.mul_add(a.1, b.1))
+    }
+    #[inline(always)]
     fn sqrt(self) -> Self {
         Pair(self.0.sqrt(), self.1.sqrt())
     }

@@ -135,6 +135,10 @@ macro_rules! portable {
                 Self(build(|i| self.0[i].sqrt()))
             }
             #[inline(always)]
+            fn mul_add(self, a: Self, b: Self) -> Self {
+                Self(build(|i| self.0[i].mul_add(a.0[i], b.0[i])))
+            }
+            #[inline(always)]
             fn min(self, o: Self) -> Self {
                 Self::select(o.lt(self), o, self)
             }

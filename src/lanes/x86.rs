@@ -3,8 +3,9 @@
 //!
 //! Every operation is one intrinsic, or a few for the row transposes, with the semantics of the
 //! portable [`super::Pack`]: IEEE basic operations, ordered quiet comparisons, `min`/`max` that
-//! keep a NaN of `self`. The fused multiply-add appears only in [`Lanes::square_error`], whose
-//! exact result SSE2 computes with Dekker's product.
+//! keep a NaN of `self`. The fused multiply-add is one instruction with AVX2 and AVX-512; SSE2
+//! computes its bits in `f64` ([`super::sse2_fma`]) for `f32`, and lane by lane through the
+//! software `fma` for `f64`.
 //!
 //! SAFETY (for the whole module): the intrinsics of AVX2 and AVX-512 may only run on a CPU that
 //! has them. The register types are `pub(crate)` and reach the kernel only through
@@ -18,19 +19,20 @@ use std::arch::x86_64::{
     _mm256_blend_ps, _mm256_blendv_pd, _mm256_blendv_ps, _mm256_castpd_ps, _mm256_castpd_si256,
     _mm256_castps256_ps128, _mm256_castps_pd, _mm256_castps_si256, _mm256_castsi256_pd,
     _mm256_castsi256_ps, _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps, _mm256_cvtps_pd,
-    _mm256_div_pd, _mm256_div_ps, _mm256_extractf128_ps, _mm256_fmsub_pd, _mm256_fmsub_ps,
-    _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd, _mm256_min_ps,
-    _mm256_movemask_pd, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd,
-    _mm256_or_ps, _mm256_or_si256, _mm256_permute2f128_ps, _mm256_permutevar8x32_ps,
-    _mm256_set1_epi32, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128,
-    _mm256_sll_epi32, _mm256_sll_epi64, _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32,
-    _mm256_srl_epi64, _mm256_storeu_pd, _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64,
-    _mm256_sub_pd, _mm256_sub_ps, _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd,
-    _mm256_unpacklo_ps, _mm256_xor_pd, _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64,
-    _mm512_add_pd, _mm512_add_ps, _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512,
-    _mm512_castps256_ps512, _mm512_castps512_ps256, _mm512_castps_pd, _mm512_castps_si512,
-    _mm512_castsi512_pd, _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask,
-    _mm512_cvtpd_ps, _mm512_cvtps_pd, _mm512_div_pd, _mm512_div_ps, _mm512_extractf64x4_pd,
+    _mm256_div_pd, _mm256_div_ps, _mm256_extractf128_ps, _mm256_fmadd_pd, _mm256_fmadd_ps,
+    _mm256_fmsub_pd, _mm256_fmsub_ps, _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd,
+    _mm256_max_ps, _mm256_min_pd, _mm256_min_ps, _mm256_movemask_pd, _mm256_movemask_ps,
+    _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd, _mm256_or_ps, _mm256_or_si256,
+    _mm256_permute2f128_ps, _mm256_permutevar8x32_ps, _mm256_set1_epi32, _mm256_set1_epi64x,
+    _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128, _mm256_sll_epi32, _mm256_sll_epi64,
+    _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32, _mm256_srl_epi64, _mm256_storeu_pd,
+    _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64, _mm256_sub_pd, _mm256_sub_ps,
+    _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd, _mm256_unpacklo_ps, _mm256_xor_pd,
+    _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64, _mm512_add_pd, _mm512_add_ps,
+    _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512, _mm512_castps256_ps512,
+    _mm512_castps512_ps256, _mm512_castps_pd, _mm512_castps_si512, _mm512_castsi512_pd,
+    _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask, _mm512_cvtpd_ps, _mm512_cvtps_pd,
+    _mm512_div_pd, _mm512_div_ps, _mm512_extractf64x4_pd, _mm512_fmadd_pd, _mm512_fmadd_ps,
     _mm512_fmsub_pd, _mm512_fmsub_ps, _mm512_insertf64x4, _mm512_loadu_pd, _mm512_loadu_ps,
     _mm512_mask_blend_pd, _mm512_mask_blend_ps, _mm512_max_pd, _mm512_max_ps, _mm512_min_pd,
     _mm512_min_ps, _mm512_mul_pd, _mm512_mul_ps, _mm512_or_si512, _mm512_permutex2var_pd,
@@ -53,6 +55,7 @@ use std::arch::x86_64::{
 use std::mem::MaybeUninit;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
+use super::sse2_fma::fma_f32x4;
 use super::{LaneBits, LaneMask, Lanes, Pair, V3};
 
 /// The binary operators of a register type, one intrinsic each.
@@ -203,7 +206,7 @@ macro_rules! float_lanes {
         cmp |$ca:ident, $cb:ident, $op:ident| $cmp:expr,
         select |$sm:ident, $sa:ident, $sb:ident| $select:expr,
         widen |$wx:ident| $widen:expr, narrow |$nw:ident| $narrow:expr,
-        square_error $square_error:tt, rows $rows:tt
+        square_error $square_error:tt, mul_add $mul_add:tt, rows $rows:tt
     ) => {
         #[doc = concat!(stringify!($lanes), " lanes of `", stringify!($t), "` in one register.")]
         #[derive(Clone, Copy, Debug)]
@@ -310,6 +313,7 @@ macro_rules! float_lanes {
                 Self(unsafe { $narrow })
             }
             float_lanes!(@square_error $square_error);
+            float_lanes!(@mul_add $mul_add);
             float_lanes!(@rows $rows);
         }
     };
@@ -318,6 +322,15 @@ macro_rules! float_lanes {
         #[inline(always)]
         fn square_error(self, square: Self) -> Self {
             let ($sx, $ss) = (self.0, square.0);
+            Self(unsafe { $e })
+        }
+    };
+    (@mul_add default) => {};
+    (@mul_add (|$ma:ident, $mb:ident, $mc:ident| $e:expr)) => {
+        #[inline(always)]
+        #[allow(unused_unsafe)]
+        fn mul_add(self, a: Self, b: Self) -> Self {
+            let ($ma, $mb, $mc) = (self.0, a.0, b.0);
             Self(unsafe { $e })
         }
     };
@@ -402,6 +415,7 @@ float_lanes!(
     widen |x| Pair(F64x2(_mm_cvtps_pd(x)), F64x2(_mm_cvtps_pd(_mm_movehl_ps(x, x)))),
     narrow |w| _mm_movelh_ps(_mm_cvtpd_ps(w.0 .0), _mm_cvtpd_ps(w.1 .0)),
     square_error default,
+    mul_add (|a, b, c| fma_f32x4(a, b, c)),
     rows default
 );
 
@@ -420,6 +434,7 @@ float_lanes!(
     widen |x| F64x2(x),
     narrow |w| w.0,
     square_error default,
+    mul_add default,
     rows default
 );
 
@@ -488,6 +503,7 @@ float_lanes!(
     ),
     narrow |w| _mm256_set_m128(_mm256_cvtpd_ps(w.1 .0), _mm256_cvtpd_ps(w.0 .0)),
     square_error (|x, square| _mm256_fmsub_ps(x, x, square)),
+    mul_add (|a, b, c| _mm256_fmadd_ps(a, b, c)),
     rows (load3_f32x8, store4_f32x8)
 );
 
@@ -507,6 +523,7 @@ float_lanes!(
     widen |x| F64x4(x),
     narrow |w| w.0,
     square_error (|x, square| _mm256_fmsub_pd(x, x, square)),
+    mul_add (|a, b, c| _mm256_fmadd_pd(a, b, c)),
     rows default
 );
 
@@ -740,6 +757,7 @@ float_lanes!(
         std::arch::x86_64::_mm256_castps_pd(_mm512_cvtpd_ps(w.1 .0)),
     )),
     square_error (|x, square| _mm512_fmsub_ps(x, x, square)),
+    mul_add (|a, b, c| _mm512_fmadd_ps(a, b, c)),
     rows (load3_f32x16, store4_f32x16)
 );
 
@@ -762,5 +780,6 @@ float_lanes!(
     widen |x| F64x8(x),
     narrow |w| w.0,
     square_error (|x, square| _mm512_fmsub_pd(x, x, square)),
+    mul_add (|a, b, c| _mm512_fmadd_pd(a, b, c)),
     rows (load3_f64x8, store4_f64x8)
 );
