@@ -52,8 +52,11 @@ pub fn exp<V: Lanes>(x: V) -> V {
     // Exact (Sterbenz): r in [−½, ½].
     let r = t - kf;
     let r2 = r * r;
-    let q = (c::<V>(Q[0]) + c::<V>(Q[1]) * r) + r2 * (c::<V>(Q[2]) + c::<V>(Q[3]) * r);
-    (c::<V>(1.0) + r * q) * pow2::<V>(k)
+    let q = r2.mul_add(
+        c::<V>(Q[3]).mul_add(r, c(Q[2])),
+        c::<V>(Q[1]).mul_add(r, c(Q[0])),
+    );
+    r.mul_add(q, c(1.0)) * pow2::<V>(k)
 }
 
 /// `ln(1 + x)` for x in (−1, ½] within 2e-6 relative (and to the rounding of 1 + x, which is
@@ -77,8 +80,10 @@ pub fn ln_1p<V: Lanes>(x: V) -> V {
     let m = V::from_bits((ix & bits((1u64 << mantissa) - 1)) + sqrt_half);
     let f = m - one;
     let f2 = f * f;
-    let q = (c::<V>(Q[0]) + c::<V>(Q[1]) * f)
-        + f2 * ((c::<V>(Q[2]) + c::<V>(Q[3]) * f) + f2 * c::<V>(Q[4]));
+    let q = f2.mul_add(
+        f2.mul_add(c(Q[4]), c::<V>(Q[3]).mul_add(f, c(Q[2]))),
+        c::<V>(Q[1]).mul_add(f, c(Q[0])),
+    );
     let tail = f2 * f * q - c::<V>(0.5) * f2 + correction;
     (f + tail) + k * c(std::f64::consts::LN_2)
 }

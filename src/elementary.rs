@@ -64,11 +64,11 @@ pub fn exp_f32<V: Lanes<T = f32>>(x: V) -> V {
     // Estrin's scheme: three independent pairs, so the chain is three steps deep, not six.
     let r2 = r * r;
     let (a0, a1, a2) = (
-        c(P[5]) + c(P[4]) * r,
-        c(P[3]) + c(P[2]) * r,
-        c(P[1]) + c(P[0]) * r,
+        c(P[4]).mul_add(r, c(P[5])),
+        c(P[2]).mul_add(r, c(P[3])),
+        c(P[0]).mul_add(r, c(P[1])),
     );
-    let p = (a0 + r2 * (a1 + r2 * a2)) * r2 + r + c(1.0);
+    let p = r2.mul_add(r2.mul_add(a2, a1), a0).mul_add(r2, r) + c(1.0);
     let y = scale(p, k);
     V::select(
         x.lt(c(LO)),
@@ -142,9 +142,9 @@ fn ln_core_f32<V: Lanes<T = f32>>(u: V, c: V) -> V {
     // Estrin's scheme (P[8 − k] multiplies f^k): four independent pairs, then powers of f²,
     // so the chain is four steps deep instead of nine.
     let z2 = z * z;
-    let (a0, a1) = (s(P[8]) + s(P[7]) * f, s(P[6]) + s(P[5]) * f);
-    let (a2, a3) = (s(P[4]) + s(P[3]) * f, s(P[2]) + s(P[1]) * f);
-    let p = (a0 + z * a1) + z2 * ((a2 + z * a3) + z2 * s(P[0]));
+    let (a0, a1) = (s(P[7]).mul_add(f, s(P[8])), s(P[5]).mul_add(f, s(P[6])));
+    let (a2, a3) = (s(P[3]).mul_add(f, s(P[4])), s(P[1]).mul_add(f, s(P[2])));
+    let p = z2.mul_add(z2.mul_add(s(P[0]), z.mul_add(a3, a2)), z.mul_add(a1, a0));
     let y = p * f * z + (dk * s(LN2_LO) + c) - s(0.5) * z;
     (f + y) + dk * s(LN2_HI)
 }

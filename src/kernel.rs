@@ -78,10 +78,10 @@ pub struct VertexColors<'a, T> {
 fn attenuation<V: Lanes>(k: [V::T; 3], d: V) -> V {
     let mut den = V::splat(k[0]);
     if k[1] != V::T::ZERO {
-        den = den + V::splat(k[1]) * d;
+        den = V::splat(k[1]).mul_add(d, den);
     }
     if k[2] != V::T::ZERO {
-        den = den + V::splat(k[2]) * d * d;
+        den = (V::splat(k[2]) * d).mul_add(d, den);
     }
     V::splat(V::T::ONE) / den.max(V::splat(V::T::MIN_POSITIVE))
 }
@@ -131,9 +131,9 @@ fn widen<V: Lanes>(v: V3<V>) -> [V::Wide; 3] {
 trait Accumulator<V: Lanes>: Copy {
     /// The empty sum.
     fn zero() -> Self;
-    /// The sum with `term` added.
+    /// The sum with `color · weight` added.
     #[must_use]
-    fn add(self, term: V3<V>) -> Self;
+    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self;
     /// The sum in the lanes' type.
     fn total(self) -> V3<V>;
 }
@@ -144,8 +144,13 @@ impl<V: Lanes> Accumulator<V> for V3<V> {
         V3::zero()
     }
     #[inline(always)]
-    fn add(self, term: V3<V>) -> Self {
-        self + term
+    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self {
+        let c = V3::<V>::splat(color);
+        V3 {
+            x: c.x.mul_add(weight, self.x),
+            y: c.y.mul_add(weight, self.y),
+            z: c.z.mul_add(weight, self.z),
+        }
     }
     #[inline(always)]
     fn total(self) -> V3<V> {
@@ -164,8 +169,8 @@ impl<V: Lanes> Accumulator<V> for Widened<V> {
         Self(widen(V3::<V>::zero()))
     }
     #[inline(always)]
-    fn add(self, term: V3<V>) -> Self {
-        let [x, y, z] = widen(term);
+    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self {
+        let [x, y, z] = widen(V3::splat(color).scale(weight));
         Self([self.0[0] + x, self.0[1] + y, self.0[2] + z])
     }
     #[inline(always)]
@@ -429,14 +434,14 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if flag(S::KNOWN.light_ambient, lp.ambient) {
                 let weight = w.min(V::splat(T::SATURATION));
-                ambient = ambient.add(V3::splat(light.ambient).scale(weight));
+                ambient = ambient.add_scaled(light.ambient, weight);
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lit_all || lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
-                diffuse = diffuse.add(V3::splat(light.diffuse).scale(weight));
+                diffuse = diffuse.add_scaled(light.diffuse, weight);
             }
             if lit_all || (lp.specular && side_plan.specular) {
                 let power = if lit_all || side_plan.power {
@@ -452,7 +457,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
                 let weight = weight(w, power).or_zero(gate);
-                specular = specular.add(V3::splat(light.specular).scale(weight));
+                specular = specular.add_scaled(light.specular, weight);
             }
         }
         [ambient.total(), diffuse.total(), specular.total()]
@@ -658,22 +663,21 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
         let global = V3::splat(prepared.global_ambient);
         // Without an ambient term the sum is +0, and a·(+0) could only change the sign of a
         // zero, which the final clamp makes +0 anyway: the same bits without it.
-        let base = e + a.mul_elements(global);
+        let base = a.mul_add(global, e);
         let base = if self.any_ambient() {
-            base + a.mul_elements(ambient)
+            a.mul_add(ambient, base)
         } else {
             base
         };
-        let lit = base + d.mul_elements(diffuse);
-        let specular = s.mul_elements(specular);
+        let lit = d.mul_add(diffuse, base);
         if flag(S::KNOWN.separate_specular, prepared.separate_specular) {
             [
                 emit(lit, alpha, finite),
-                emit(specular, V::splat(T::ONE), finite),
+                emit(s.mul_elements(specular), V::splat(T::ONE), finite),
             ]
         } else {
             let zero = V::splat(T::ZERO);
-            [emit(lit + specular, alpha, finite), [zero; 4]]
+            [emit(s.mul_add(specular, lit), alpha, finite), [zero; 4]]
         }
     }
 }
