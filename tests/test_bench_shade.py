@@ -15,7 +15,7 @@ from glshade import __main__ as cli
 from glshade import _glshade
 from glshade._tools import timing
 from glshade._tools.baselines import numba_shade, numpy_shade
-from glshade._tools.machine import machine
+from glshade._tools.machine import _identity, machine
 from glshade._tools.scenes import bench_scenes, bench_vertices
 from glshade._tools.timing import Timing, ratio, time_calibrated, time_rounds
 
@@ -91,6 +91,19 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json(
         ]
         assert r["speedup"]["numpy"]["median"] == pytest.approx(np.median(per_round))
         assert {"stream", "display", "exact64"} <= set(r["ms"])
+
+
+def test_the_cpu_is_named_by_family_and_model_where_its_name_does_not_say() -> None:
+    def identity(vendor: str, family: int, model: int) -> str:
+        return _identity({"vendor_id": vendor, "cpu family": str(family), "model": str(model)})
+
+    # Under KVM this project's AMD machine calls itself "AMD EPYC".
+    assert identity("AuthenticAMD", 25, 17) == "AuthenticAMD family 25 model 17: Zen 4"
+    assert identity("AuthenticAMD", 26, 2).endswith(": Zen 5")
+    assert identity("GenuineIntel", 6, 143).endswith(": Sapphire Rapids")
+    assert identity("GenuineIntel", 6, 151) == "GenuineIntel family 6 model 151"
+    assert _identity({"model name": "ARMv8"}) == ""
+    assert machine()["cpu"]
 
 
 @pytest.mark.parametrize("dtype", [np.float32, np.float64])

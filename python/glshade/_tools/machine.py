@@ -26,8 +26,41 @@ def instruction_set() -> str:
     return gs.Scene().plan().split(", ")[1]
 
 
+# Microarchitectures by vendor, family and model number, for the CPUs whose model name does not
+# say (under a hypervisor AMD's is often just "AMD EPYC"): AMD's Zen 3 to 5, Intel's Xeons with
+# AVX-512. Others print their numbers only.
+_MICROARCHITECTURES = (
+    ("AuthenticAMD", 25, (*range(0x00, 0x10), *range(0x20, 0x30), *range(0x40, 0x60)), "Zen 3"),
+    ("AuthenticAMD", 25, (*range(0x10, 0x20), *range(0x60, 0x80), *range(0xA0, 0xB0)), "Zen 4"),
+    ("AuthenticAMD", 26, range(0x00, 0x100), "Zen 5"),
+    ("GenuineIntel", 6, (0x55,), "Skylake or Cascade Lake"),
+    ("GenuineIntel", 6, (0x6A, 0x6C), "Ice Lake"),
+    ("GenuineIntel", 6, (0x8F,), "Sapphire Rapids"),
+    ("GenuineIntel", 6, (0xCF,), "Emerald Rapids"),
+    ("GenuineIntel", 6, (0xAD, 0xAE), "Granite Rapids"),
+)
+
+
+def _identity(fields: dict[str, str]) -> str:
+    """`vendor family F model M`, with the microarchitecture where `_MICROARCHITECTURES` knows
+    it; empty where /proc/cpuinfo gives no numbers."""
+    vendor, family, model = (fields.get(k, "") for k in ("vendor_id", "cpu family", "model"))
+    if not (family.isdigit() and model.isdigit()):
+        return ""
+    name = next(
+        (
+            arch
+            for v, f, models, arch in _MICROARCHITECTURES
+            if (v, f) == (vendor, int(family)) and int(model) in models
+        ),
+        None,
+    )
+    return f"{vendor} family {family} model {model}" + (f": {name}" if name else "")
+
+
 def _cpu() -> tuple[str, list[str]]:
-    """The CPU's model name and which of `FLAGS` it has, from /proc/cpuinfo where there is one."""
+    """The CPU's model name (with its family and model number, and the microarchitecture where
+    known) and which of `FLAGS` it has, from /proc/cpuinfo where there is one."""
     try:
         text = Path("/proc/cpuinfo").read_text()
     except OSError:
@@ -37,7 +70,8 @@ def _cpu() -> tuple[str, list[str]]:
         for key, _, value in (line.partition(":") for line in text.splitlines()[:40])
     }
     flags = set(fields.get("flags", "").split())
-    return fields.get("model name", platform.machine()), [f for f in FLAGS if f in flags]
+    name, identity = fields.get("model name", platform.machine()), _identity(fields)
+    return (f"{name} ({identity})" if identity else name), [f for f in FLAGS if f in flags]
 
 
 def machine() -> dict[str, Any]:
