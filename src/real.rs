@@ -18,7 +18,7 @@ pub trait Real: Float + Elementary {
 }
 
 /// The lanes of one block of `T` under instruction set `S` ([`InstructionSet::Block`]): two
-/// registers with AVX-512, four with AVX2 and SSE2 (measured on Zen 5, 2026-12-02, one thread:
+/// registers with AVX-512, four with AVX2 and SSE2 (measured on Zen 4, 2026-12-02, one thread:
 /// with AVX-512 two ran 1.2 to 1.4 times as fast as one in the shapes' kernels and as fast as
 /// four in the general one, in half the code; with AVX2 four kept 8 lights 10 to 15% ahead).
 pub type BlockLanes<T, S> = <S as InstructionSet>::Block<<T as Real>::Vector<S>>;
