@@ -159,10 +159,10 @@ fn squared_exponent<T: Float>(s: T) -> Option<u32> {
 /// (1 − c)^k for c < 1 and k ≥ 1, formed on the complement: with 1 − c_{i+1} = (1 − c_i)²,
 /// c_{i+1} = c_i·(2 − c_i), and a product (1 − a)(1 − b) = 1 − (a + b·(1 − a)). For c in
 /// [0, 1) no step cancels and none amplifies the complement's relative error, however small it
-/// is, so the power errs by a few roundoffs of 1 (3.2 in f32, 2.3 in f64, measured over a
-/// sample of every k to [`SQUARED_EXPONENT_MAX`]), not by k of them as a naive power does. For c < 0 (a base
-/// above 1: a normal longer than 1) the relative error grows with k·ln(1 − c), as that of
-/// `exp(s·ln(1 − c))` does; past `MAX` the result is +inf.
+/// is, so the power errs by a few roundoffs of 1 (3.2 in f32, 2.3 in f64, measured on a sample
+/// of the k up to [`SQUARED_EXPONENT_MAX`]), not by k of them as a naive power does. For c < 0
+/// (a base above 1: a normal longer than 1) the relative error grows with k·ln(1 − c), as that
+/// of `exp(s·ln(1 − c))` does; past `MAX` the result is +inf.
 #[inline(always)]
 fn complement_pow<V: Lanes>(c: V, k: u32) -> V {
     let one = V::splat(V::T::ONE);
