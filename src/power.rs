@@ -148,12 +148,14 @@ pub fn cos_pow<V: ElementaryLanes, F: Tier>(
 /// exp(s·ln(1 − x)): the integers from 1 to this.
 pub const SQUARED_EXPONENT_MAX: u32 = 1024;
 
-/// `s` as an integer when its power is formed by squaring.
+/// `s` as an integer when its power is formed by squaring: a conversion and three comparisons
+/// per block and light, with no call (`fract` is one on the SSE2 baseline).
 #[inline(always)]
-#[allow(clippy::cast_sign_loss, clippy::cast_possible_truncation)] // an integer in [1, 1024]
+#[allow(clippy::cast_sign_loss, clippy::cast_possible_truncation)] // checked by the round trip
 fn squared_exponent<T: Float>(s: T) -> Option<u32> {
     let k = s.to_f64();
-    (k >= 1.0 && k <= f64::from(SQUARED_EXPONENT_MAX) && k.fract() == 0.0).then_some(k as u32)
+    let whole = k as u32; // saturating; NaN gives 0
+    (k >= 1.0 && k <= f64::from(SQUARED_EXPONENT_MAX) && f64::from(whole) == k).then_some(whole)
 }
 
 /// (1 − c)^k for c < 1 and k ≥ 1, formed on the complement: with 1 − c_{i+1} = (1 − c_i)²,

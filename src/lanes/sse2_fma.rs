@@ -17,9 +17,9 @@ use std::arch::x86_64::{
 pub(crate) fn fma_f32x4(a: __m128, b: __m128, c: __m128) -> __m128 {
     // SAFETY: SSE2 is the x86-64 baseline.
     unsafe {
-        let high = |x: __m128| _mm_cvtps_pd(_mm_movehl_ps(x, x));
+        let upper = |x: __m128| _mm_cvtps_pd(_mm_movehl_ps(x, x));
         let low = fma_to_odd(_mm_cvtps_pd(a), _mm_cvtps_pd(b), _mm_cvtps_pd(c));
-        let high = fma_to_odd(high(a), high(b), high(c));
+        let high = fma_to_odd(upper(a), upper(b), upper(c));
         _mm_movelh_ps(_mm_cvtpd_ps(low), _mm_cvtpd_ps(high))
     }
 }
