@@ -25,7 +25,7 @@ use crate::lanes::{
 };
 use crate::material::ColorMaterialMode;
 use crate::plan::{LightKind, Plan};
-use crate::power::{cos_pow, spot_factor, sum_exact, Scale};
+use crate::power::{cos_pow, halfway_pow, spot_factor, squared_minus_one, sum_exact, Scale};
 use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
@@ -114,7 +114,8 @@ fn sat3<V: Lanes>(v: V3<V>) -> V3<V> {
 struct SideNormal<V: Lanes> {
     /// n as GL uses it (unit only with `normalize`), negated for the back side.
     n: V3<V>,
-    /// n̂, its direction (when the plan computes it).
+    /// n̂, its direction (when the plan computes it, and in a block with a normal far from unit
+    /// length whenever the plan computes |n|).
     unit: V3<V>,
     /// |n| (1 with `normalize`): (n·ĥ)^s = (|n| n̂·ĥ)^s.
     scale: Scale<V>,
@@ -352,11 +353,10 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                 } = light.source
                 {
                     // A constant ĥ is zero in every lane or in none.
-                    if h == [T::ZERO; 3] {
+                    if h.direction == [T::ZERO; 3] {
                         return V::splat(T::ZERO);
                     }
-                    let h = V3::splat(h);
-                    return cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
+                    return halfway_pow::<V, F>(side.n, side.unit, &h, s, &side.scale);
                 }
                 // A shape whose every ĥ is constant never comes here (`shape::fits`).
                 let constant = LightKind::Directional {
@@ -511,30 +511,39 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
         [ambient, sat3(sums[1]), sat3(sums[2])]
     }
 
-    /// The normal of the front side as the plan needs it.
+    /// The normal of the front side as the plan needs it. A plan that computes |n| without n̂
+    /// (its only powers are of constant ĥ: [`halfway_pow`]) forms n̂ and |n| only in a block
+    /// with a normal far from unit length.
     #[inline(always)]
     fn front_normal<V: Lanes<T = T>>(&self, n: V3<V>) -> SideNormal<V> {
-        if !self.plan.unit_normal {
+        let plan = self.plan;
+        if self.prepared.normalize {
+            let (unit, _) = normalize_and_length(n);
+            return SideNormal {
+                n: unit,
+                unit,
+                scale: Scale::unit(),
+            };
+        }
+        if !plan.normal_length {
+            // n̂ only with `normalize`; no power needs |n|.
             return SideNormal {
                 n,
                 unit: n,
                 scale: Scale::unit(),
             };
         }
-        let (unit, length) = normalize_and_length(n);
-        if self.prepared.normalize {
-            SideNormal {
-                n: unit,
-                unit,
-                scale: Scale::unit(),
-            }
-        } else {
-            let scale = if self.plan.normal_length {
-                Scale::of(n, length)
-            } else {
-                Scale::unit()
-            };
+        let (squared, near) = squared_minus_one(n);
+        if plan.unit_normal || !near.all() {
+            let (unit, length) = normalize_and_length(n);
+            let scale = Scale::from_squared(squared, near, length);
             SideNormal { n, unit, scale }
+        } else {
+            SideNormal {
+                n,
+                unit: n,
+                scale: Scale::squared_only(squared),
+            }
         }
     }
 

@@ -63,9 +63,12 @@ pub struct Plan {
     pub sides: [SidePlan; 2],
     /// Positions are read: some light is positional or the viewer is local.
     pub positions: bool,
-    /// The unit normal n̂ is computed (`normalize`, or a specular power that needs it).
+    /// The unit normal n̂ is computed for every block (`normalize`, or a Blinn power with a
+    /// per-vertex ĥ); a power of a constant ĥ needs it only in blocks with a normal far from
+    /// unit length.
     pub unit_normal: bool,
-    /// ln |n| is computed: a Blinn power on normals that are not normalised, (n·ĥ)^s = |n|^s (n̂·ĥ)^s.
+    /// |n| is computed, as |n|² − 1 (exactly) and, far from unit length, ln |n|: a Blinn power on
+    /// normals that are not normalised, (n·ĥ)^s = |n|^s (n̂·ĥ)^s.
     pub normal_length: bool,
     /// The vertex-to-eye direction VP_e is computed per vertex (local viewer and a specular term).
     pub view: bool,
@@ -121,10 +124,15 @@ impl Plan {
             .iter()
             .any(|l| matches!(l.source, Source::Positional { .. }));
         let local = matches!(prepared.viewer, Viewer::Local(_));
+        let normal_length = !prepared.normalize && power && prepared.specular == Specular::Blinn;
+        let constant = LightKind::Directional {
+            constant_halfway: true,
+        };
+        let per_vertex_halfway = lights.iter().any(|l| l.specular && l.kind != constant);
         Self {
             positions: positional || local,
-            unit_normal: prepared.normalize || power,
-            normal_length: !prepared.normalize && power && prepared.specular == Specular::Blinn,
+            unit_normal: prepared.normalize || (normal_length && per_vertex_halfway),
+            normal_length,
             view: local && power,
             lights,
             sides,
@@ -178,12 +186,13 @@ impl fmt::Display for Plan {
             "normals only"
         };
         write!(f, "reads {reads}")?;
-        if self.unit_normal {
-            f.write_str("; n̂")?;
-            if self.normal_length {
-                f.write_str(" and ln|n|")?;
-            }
-        }
+        let normal = match (self.unit_normal, self.normal_length) {
+            (true, true) => "; n̂ and ln|n|",
+            (true, false) => "; n̂",
+            (false, true) => "; |n|² − 1 (n̂ and ln|n| in blocks far from unit length)",
+            (false, false) => "",
+        };
+        f.write_str(normal)?;
         if self.view {
             f.write_str("; VP_e per vertex")?;
         }

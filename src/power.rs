@@ -24,7 +24,7 @@ pub struct Spot<T: Float> {
 /// the direction becomes `length · cos` in a power.
 ///
 /// Near 1 (|v|² in [0.5, 2], `near`) the length enters as |v| − 1, computed without
-/// cancellation ([`length_minus_one`]); elsewhere as ln |v|. So (|v| cos)^s needs one `ln_1p`
+/// cancellation (the exact [`squared_minus_one`] over |v| + 1); elsewhere as ln |v|. So (|v| cos)^s needs one `ln_1p`
 /// per power: ln_1p((|v| − 1) − |v|·x) near 1, ln_1p(−x) + ln |v| elsewhere, x = 1 − cos.
 #[derive(Clone, Copy)]
 pub struct Scale<V: Lanes> {
@@ -34,6 +34,8 @@ pub struct Scale<V: Lanes> {
     pub length: V,
     /// |v| − 1 in the `near` lanes.
     pub minus_one: V,
+    /// |v|² − 1 in the `near` lanes, from exact squares ([`squared_minus_one`]).
+    pub squared_minus_one: V,
     /// ln |v| in the other lanes.
     pub ln: V,
 }
@@ -42,30 +44,52 @@ impl<V: ElementaryLanes> Scale<V> {
     /// Length 1: a unit vector.
     #[inline(always)]
     pub fn unit() -> Self {
+        let zero = V::splat(V::T::ZERO);
         Self {
             near: V::Mask::splat(true),
             length: V::splat(V::T::ONE),
-            minus_one: V::splat(V::T::ZERO),
-            ln: V::splat(V::T::ZERO),
+            minus_one: zero,
+            squared_minus_one: zero,
+            ln: zero,
         }
     }
 
     /// The scale of `v`, whose length (from [`normalize_and_length`]) is `length`.
     #[inline(always)]
     pub fn of(v: V3<V>, length: V) -> Self {
-        let (minus_one, near) = length_minus_one(v, length);
+        let (squared, near) = squared_minus_one(v);
+        Self::from_squared(squared, near, length)
+    }
+
+    /// The scale of a vector from its [`squared_minus_one`] and its `length`.
+    #[inline(always)]
+    pub fn from_squared(squared_minus_one: V, near: V::Mask, length: V) -> Self {
+        let one = V::splat(V::T::ONE);
+        let minus_one = squared_minus_one / (length + one);
         let length = length.min(V::splat(V::T::MAX));
         // ln |v| is read in the far lanes only, and unit normals have none: skip it then.
         let ln = if near.all() {
             V::splat(V::T::ZERO)
         } else {
-            V::select(near, V::splat(V::T::ONE), length).ln()
+            V::select(near, one, length).ln()
         };
         Self {
             near,
             length,
             minus_one,
+            squared_minus_one,
             ln,
+        }
+    }
+
+    /// The scale of a vector whose every lane is near 1, for [`halfway_pow`] alone, which reads
+    /// only `squared_minus_one` there: no square root and no division. `length` and `minus_one`
+    /// are not formed (1 and 0), so no other power may be given it.
+    #[inline(always)]
+    pub fn squared_only(squared_minus_one: V) -> Self {
+        Self {
+            squared_minus_one,
+            ..Self::unit()
         }
     }
 }
@@ -86,11 +110,11 @@ pub fn sum_exact<W: Copy + Add<Output = W> + Sub<Output = W>>(a: W, b: W) -> (W,
     (s, (a - (s - bb)) + (b - bb))
 }
 
-/// |v| − 1 to a few ulp of the result, and the lanes where that holds (|v|² in [0.5, 2]): the
+/// |v|² − 1 to a few ulp of the result, and the lanes where that holds (|v|² in [0.5, 2]): the
 /// squares and their sum are formed exactly, so |v|² − 1 keeps every bit when |v| ≈ 1 (f32 unit
 /// normals differ from 1 by a few ulp, and (n·ĥ)^s multiplies that by s).
 #[inline(always)]
-pub fn length_minus_one<V: Lanes>(v: V3<V>, length: V) -> (V, V::Mask) {
+pub fn squared_minus_one<V: Lanes>(v: V3<V>) -> (V, V::Mask) {
     let one = V::splat(V::T::ONE);
     let (a, ae) = square_exact(v.x);
     let (b, be) = square_exact(v.y);
@@ -99,9 +123,7 @@ pub fn length_minus_one<V: Lanes>(v: V3<V>, length: V) -> (V, V::Mask) {
     let (abc, e2) = sum_exact(ab, c);
     let near = abc.ge(V::splat(V::T::HALF)) & abc.le(one + one);
     // abc − 1 is exact by Sterbenz in the near lanes.
-    let squared_minus_one = (abc - one) + ((e1 + e2) + ((ae + be) + ce));
-    let m1 = squared_minus_one / (length + one);
-    (m1, near)
+    ((abc - one) + ((e1 + e2) + ((ae + be) + ce)), near)
 }
 
 /// `(scale.length · max(â·b̂, 0))^s` for unit `a`, `b` whose dot product is `cos`, with 0^0 = 1,
@@ -131,6 +153,84 @@ pub fn cos_pow<V: ElementaryLanes, F: Tier>(
     // y > −1: the base is positive (not rounded to 0, where ln would be −inf).
     let zero = V::splat(V::T::ZERO);
     let valid = cos.gt(zero) & x.lt(V::splat(V::T::ONE)) & y.gt(V::splat(-V::T::ONE));
+    power_of_base::<V, F>(y, scale, s, valid)
+}
+
+/// A constant unit direction ĥ (a directional light's halfway vector under an infinite
+/// viewer) with the per-call constants [`halfway_pow`] needs, from its `f64` length.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Halfway<T: Float> {
+    /// ĥ, rounded to the kernel's type.
+    pub direction: [T; 3],
+    /// (|ĥ| − 1)² of the rounded ĥ.
+    pub offset: T,
+    /// 1 / (2|ĥ|) of the rounded ĥ (0 for a zero ĥ).
+    pub half_inverse_length: T,
+}
+
+impl<T: Float> Halfway<T> {
+    /// The constants of the rounded direction `direction`.
+    pub fn new(direction: [T; 3]) -> Self {
+        let length = direction
+            .iter()
+            .map(|c| c.to_f64() * c.to_f64())
+            .sum::<f64>()
+            .sqrt();
+        Self {
+            direction,
+            offset: T::from_f64((length - 1.0) * (length - 1.0)),
+            half_inverse_length: T::from_f64(if length > 0.0 { 0.5 / length } else { 0.0 }),
+        }
+    }
+}
+
+/// `(max(n·ĥ/|ĥ|, 0))^s` for a constant ĥ (`halfway`, nonzero), with 0^0 = 1: [`cos_pow`] of
+/// n̂ and ĥ with `scale` that of `n`, without n̂ where |n| is near 1.
+///
+/// There the base minus one is n·ĥ/|ĥ| − 1 = ((|n|² − 1) + (|ĥ| − 1)² − |n − ĥ|²) / (2|ĥ|):
+/// |n|² − 1 is exact (`scale.squared_minus_one`) and |n − ĥ|² does not cancel near the
+/// highlight, so the power keeps cos_pow's few ulp with no square root and no division per
+/// vertex. The other lanes take cos_pow's 1 − n̂·ĥ = |n̂ − ĥ|²/2 and ln |n|, from `unit`
+/// (n̂), which is read only in a block that has such a lane.
+#[inline(always)]
+pub fn halfway_pow<V: ElementaryLanes, F: Tier>(
+    n: V3<V>,
+    unit: V3<V>,
+    halfway: &Halfway<V::T>,
+    s: V::T,
+    scale: &Scale<V>,
+) -> V {
+    if s == V::T::ZERO {
+        return V::splat(V::T::ONE);
+    }
+    let h = V3::splat(halfway.direction);
+    let (zero, one) = (V::splat(V::T::ZERO), V::splat(V::T::ONE));
+    let d = n - h;
+    let y_near = (scale.squared_minus_one + V::splat(halfway.offset) - d.dot(d))
+        * V::splat(halfway.half_inverse_length);
+    let lit = n.dot(h).gt(zero);
+    let (y, valid) = if scale.near.all() {
+        (y_near, lit & y_near.gt(-one))
+    } else {
+        let d = unit - h;
+        let x = V::splat(V::T::HALF) * d.dot(d);
+        let y = V::select(scale.near, y_near, -x);
+        (y, lit & (scale.near | x.lt(one)) & y.gt(-one))
+    };
+    power_of_base::<V, F>(y, scale, s, valid)
+}
+
+/// (1 + y)^s in the `valid` lanes (y > −1 there), 0 elsewhere, for s ≠ 0: by squaring on the
+/// complement −y for the integer s up to [`SQUARED_EXPONENT_MAX`] where the length of `scale`
+/// is near 1, else `exp(s·(ln_1p(y) + ln |v|))`, ln |v| in the lanes that are not near 1.
+#[inline(always)]
+fn power_of_base<V: ElementaryLanes, F: Tier>(
+    y: V,
+    scale: &Scale<V>,
+    s: V::T,
+    valid: V::Mask,
+) -> V {
+    let zero = V::splat(V::T::ZERO);
     let squared = squared_exponent(s).map(|k| complement_pow(-y, k));
     let power = match squared {
         Some(p) if scale.near.all() => p,
@@ -294,28 +394,37 @@ mod tests {
 
     #[test]
     fn a_lanes_power_does_not_depend_on_the_lanes_beside_it() {
-        // Near-unit and long normals in one block: squaring in some lanes, exp and ln in others.
+        // Near-unit and long normals in one block: squaring in some lanes, exp and ln in others,
+        // and for a constant ĥ, n̂ only in the far lanes.
         let rows = [
             [0.6_f32, 0.0, 0.8],
             [3.0, 0.0, 4.0],
             [0.0, 0.28, 0.96],
             [0.1, 0.0, 0.05],
         ];
-        let h = [0.0, 0.0, 1.0];
-        let power = |v: V3<Pack<f32, 4>>| {
+        let (h, halfway) = ([0.0, 0.0, 1.0], Halfway::new([0.0, 0.6, 0.8]));
+        let powers = |v: V3<Pack<f32, 4>>| {
             let (unit, len) = normalize_and_length(v);
             let scale = Scale::of(v, len);
             let h = V3::splat(h);
-            cos_pow::<_, Full>(unit.dot(h), unit, h, 32.0, &scale).0
+            [
+                cos_pow::<_, Full>(unit.dot(h), unit, h, 32.0, &scale).0,
+                halfway_pow::<_, Full>(v, unit, &halfway, 32.0, &scale).0,
+            ]
         };
-        let block = power(V3 {
+        let block = powers(V3 {
             x: Pack(rows.map(|r| r[0])),
             y: Pack(rows.map(|r| r[1])),
             z: Pack(rows.map(|r| r[2])),
         });
         for (i, row) in rows.iter().enumerate() {
-            let alone = power(V3::splat(*row));
-            assert_eq!(block[i].to_bits(), alone[0].to_bits(), "lane {i}");
+            let alone = powers(V3::splat(*row));
+            for (b, a) in block.iter().zip(alone) {
+                assert_eq!(b[i].to_bits(), a[0].to_bits(), "lane {i}");
+            }
+            // The kernel's lean form (no n̂ in a block of near lanes) gives the same bits.
+            let lean = halfway1(*row, halfway.direction, 32.0);
+            assert_eq!(block[1][i].to_bits(), lean.to_bits(), "lane {i}");
         }
     }
 
@@ -327,12 +436,81 @@ mod tests {
             let t = f64::from(i) * 0.013;
             let v = [t.sin() * t.cos(), t.sin() * t.sin(), t.cos()].map(|c| c as f32);
             let (_, len) = normalize_and_length(V3::<One>::splat(v));
-            let (m1, near) = length_minus_one(V3::<One>::splat(v), len);
+            let scale = Scale::of(V3::<One>::splat(v), len);
+            let (m1, near) = (scale.minus_one, scale.near);
             assert!(near.0[0]);
             let exact = v.map(f64::from).iter().map(|c| c * c).sum::<f64>().sqrt() - 1.0;
             worst = worst.max((f64::from(m1.0[0]) - exact).abs());
         }
         assert!(worst < 1e-14, "{worst}");
+    }
+
+    /// (n·ĥ/|ĥ|)^s by [`halfway_pow`] in `f32` for the normal `n` (its scale as the kernel
+    /// forms it: n̂ only where |n| is far from 1).
+    fn halfway1(n: [f32; 3], h: [f32; 3], s: f32) -> f32 {
+        let v = V3::<One>::splat(n);
+        let (squared, near) = squared_minus_one(v);
+        let (unit, scale) = if near.all() {
+            (v, Scale::squared_only(squared))
+        } else {
+            let (unit, length) = normalize_and_length(v);
+            (unit, Scale::from_squared(squared, near, length))
+        };
+        halfway_pow::<_, Full>(v, unit, &Halfway::new(h), s, &scale).0[0]
+    }
+
+    #[test]
+    fn constant_halfway_powers_match_a_float64_transcription() {
+        // Normals within a few ulp of unit length and up to 30% off it, around a rounded ĥ: the
+        // power of the f32 inputs as given, (max(n·ĥ, 0)/|ĥ|)^s in f64 (at most `MAX`), within
+        // a few roundoffs of 1 (squaring on the complement errs absolutely) plus a few of the
+        // power times s·(||n|² − 1| + |n·ĥ − 1|), the condition of the power in its base.
+        let h64 = [0.3_f64, 0.5, 1.0];
+        let h_len = h64.iter().map(|c| c * c).sum::<f64>().sqrt();
+        let h = h64.map(|c| (c / h_len) as f32);
+        let h_len = h.iter().map(|&c| f64::from(c).powi(2)).sum::<f64>().sqrt();
+        let u = 2f64.powi(-24);
+        for &s in &[1.0_f32, 7.0, 32.0, 31.7, 1000.0, 1e4] {
+            let mut worst: f64 = 0.0;
+            for i in 0..4000 {
+                let t = f64::from(i) * 0.37;
+                let theta = (f64::from(i % 97) / 97.0).powi(3) * 0.6;
+                let length = if i % 3 == 0 {
+                    1.0
+                } else {
+                    1.0 + 0.3 * (t * 1.7).sin()
+                };
+                let d = [theta.sin() * t.cos(), theta.sin() * t.sin(), theta.cos()];
+                // d about ĥ: rotate (0, 0, 1) onto ĥ by Gram-Schmidt on an axis.
+                let hz = h64.map(|c| c / h64.iter().map(|c| c * c).sum::<f64>().sqrt());
+                let ex = [hz[2], 0.0, -hz[0]].map(|c| c / (hz[0] * hz[0] + hz[2] * hz[2]).sqrt());
+                let ey = [
+                    hz[1] * ex[2] - hz[2] * ex[1],
+                    hz[2] * ex[0] - hz[0] * ex[2],
+                    hz[0] * ex[1] - hz[1] * ex[0],
+                ];
+                let n: [f32; 3] = std::array::from_fn(|k| {
+                    (length * (d[0] * ex[k] + d[1] * ey[k] + d[2] * hz[k])) as f32
+                });
+                let dot: f64 = (0..3).map(|k| f64::from(n[k]) * f64::from(h[k])).sum();
+                let exact = (dot / h_len)
+                    .max(0.0)
+                    .powf(f64::from(s))
+                    .min(f64::from(f32::MAX));
+                let got = f64::from(halfway1(n, h, s));
+                // The roundings of |n|² − 1 and of n·ĥ − 1, each a few u of its magnitude,
+                // times s.
+                let squared = n.iter().map(|&c| f64::from(c).powi(2)).sum::<f64>() - 1.0;
+                let amplified = f64::from(s) * (squared.abs() + (dot / h_len - 1.0).abs());
+                let allowed = 16.0 * u * (1.0 + amplified) * exact + 8.0 * u;
+                worst = worst.max((got - exact).abs() / allowed);
+            }
+            assert!(worst <= 1.0, "s = {s}: {worst} of the allowed error");
+        }
+        // No power from behind the surface, 0^0 = 1, a zero ĥ's constants stay finite.
+        assert_eq!(halfway1([0.0, 0.0, -1.0], [0.0, 0.0, 1.0], 3.0), 0.0);
+        assert_eq!(halfway1([0.0, 0.0, -1.0], [0.0, 0.0, 1.0], 0.0), 1.0);
+        assert_eq!(Halfway::<f32>::new([0.0; 3]).half_inverse_length, 0.0);
     }
 
     #[test]

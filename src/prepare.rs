@@ -10,7 +10,7 @@ use crate::float::{exponent, ldexp};
 use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::power::{spot_factor, Spot};
+use crate::power::{spot_factor, Halfway, Spot};
 use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
 
@@ -51,7 +51,7 @@ pub enum Source<T: Real> {
         /// VP_pli, unit.
         vp: [T; 3],
         /// ĥ for an infinite viewer with Blinn specular (a per-light constant then), else `None`.
-        halfway: Option<[T; 3]>,
+        halfway: Option<Halfway<T>>,
         /// spot_i.
         spot: T,
     },
@@ -405,7 +405,9 @@ fn prepare_light<T: Real>(
     let source = if light.is_directional() {
         let vp = normalize_or_zero::<f64>(DVec3::new(x, y, z));
         let halfway = match viewer {
-            Some(view) if blinn => Some(cast::<T>(normalize_or_zero::<f64>(vp + view))),
+            Some(view) if blinn => {
+                Some(Halfway::new(cast::<T>(normalize_or_zero::<f64>(vp + view))))
+            }
             _ => None,
         };
         let vp = cast::<T>(vp);
@@ -550,7 +552,7 @@ mod tests {
             spot, 0.0,
             "the light shines along -z, the cone points along +z"
         );
-        assert_eq!(halfway, Some([0.0, 0.0, 1.0]));
+        assert_eq!(halfway.map(|h| h.direction), Some([0.0, 0.0, 1.0]));
     }
 
     #[test]
