@@ -24,8 +24,9 @@ pub struct Spot<T: Float> {
 /// the direction becomes `length · cos` in a power.
 ///
 /// Near 1 (|v|² in [0.5, 2], `near`) the length enters as |v| − 1, computed without
-/// cancellation (the exact [`squared_minus_one`] over |v| + 1); elsewhere as ln |v|. So (|v| cos)^s needs one `ln_1p`
-/// per power: ln_1p((|v| − 1) − |v|·x) near 1, ln_1p(−x) + ln |v| elsewhere, x = 1 − cos.
+/// cancellation (the exact [`squared_minus_one`] over |v| + 1); elsewhere as ln |v|. So
+/// (|v| cos)^s needs one `ln_1p` per power: ln_1p((|v| − 1) − |v|·x) near 1, ln_1p(−x) + ln |v|
+/// elsewhere, x = 1 − cos.
 #[derive(Clone, Copy)]
 pub struct Scale<V: Lanes> {
     /// The lanes whose length is near 1.
