@@ -25,7 +25,7 @@ use crate::lanes::{
 };
 use crate::material::ColorMaterialMode;
 use crate::plan::{LightKind, Plan};
-use crate::power::{cos_pow, halfway_pow, spot_factor, squared_minus_one, sum_exact, Scale};
+use crate::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
 use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
@@ -533,18 +533,8 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                 scale: Scale::unit(),
             };
         }
-        let (squared, near) = squared_minus_one(n);
-        if plan.unit_normal || !near.all() {
-            let (unit, length) = normalize_and_length(n);
-            let scale = Scale::from_squared(squared, near, length);
-            SideNormal { n, unit, scale }
-        } else {
-            SideNormal {
-                n,
-                unit: n,
-                scale: Scale::squared_only(squared),
-            }
-        }
+        let (unit, scale) = normal_scale(n, plan.unit_normal);
+        SideNormal { n, unit, scale }
     }
 
     /// [`Kernel::block`]'s eye-space normals N·n for a block with a lane whose N·n is not

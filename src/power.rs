@@ -7,7 +7,7 @@ use std::ops::{Add, Sub};
 
 use crate::elementary::{ElementaryLanes, Tier};
 use crate::float::Float;
-use crate::lanes::{LaneMask, Lanes, V3};
+use crate::lanes::{normalize_and_length, LaneMask, Lanes, V3};
 
 /// A spot light's cone, in the kernel's type.
 #[derive(Clone, Copy, Debug)]
@@ -95,6 +95,20 @@ impl<V: ElementaryLanes> Scale<V> {
     }
 }
 
+/// (n̂, the scale of n) for a normal `n` that is not normalised: n̂ and |n| in every block when
+/// `every_block`, else (when the only powers are [`halfway_pow`]'s) only in a block with a lane
+/// far from unit length, and `n` itself with [`Scale::squared_only`] in the others.
+#[inline(always)]
+pub fn normal_scale<V: ElementaryLanes>(n: V3<V>, every_block: bool) -> (V3<V>, Scale<V>) {
+    let (squared, near) = squared_minus_one(n);
+    if every_block || !near.all() {
+        let (unit, length) = normalize_and_length(n);
+        (unit, Scale::from_squared(squared, near, length))
+    } else {
+        (n, Scale::squared_only(squared))
+    }
+}
+
 /// (a, e) with a + e = x · x exactly (Dekker's product, or a fused multiply-add: the same exact
 /// error on every CPU), for |x| well inside the type's range.
 #[inline(always)]
@@ -147,14 +161,20 @@ pub fn cos_pow<V: ElementaryLanes, F: Tier>(
     if s == V::T::ZERO {
         return V::splat(V::T::ONE);
     }
-    let d = a - b;
-    let x = V::splat(V::T::HALF) * d.dot(d);
+    let x = one_minus_cos(a, b);
     let near = scale.minus_one - scale.length * x;
     let y = V::select(scale.near, near, -x);
     // y > −1: the base is positive (not rounded to 0, where ln would be −inf).
     let zero = V::splat(V::T::ZERO);
     let valid = cos.gt(zero) & x.lt(V::splat(V::T::ONE)) & y.gt(V::splat(-V::T::ONE));
     power_of_base::<V, F>(y, scale, s, valid)
+}
+
+/// 1 − â·b̂ for unit `a` and `b`, as |â − b̂|²/2: no cancellation near â = b̂.
+#[inline(always)]
+fn one_minus_cos<V: Lanes>(a: V3<V>, b: V3<V>) -> V {
+    let d = a - b;
+    V::splat(V::T::HALF) * d.dot(d)
 }
 
 /// A constant unit direction ĥ (a directional light's halfway vector under an infinite
@@ -213,8 +233,7 @@ pub fn halfway_pow<V: ElementaryLanes, F: Tier>(
     let (y, valid) = if scale.near.all() {
         (y_near, lit & y_near.gt(-one))
     } else {
-        let d = unit - h;
-        let x = V::splat(V::T::HALF) * d.dot(d);
+        let x = one_minus_cos(unit, h);
         let y = V::select(scale.near, y_near, -x);
         (y, lit & (scale.near | x.lt(one)) & y.gt(-one))
     };
@@ -302,7 +321,7 @@ pub fn spot_factor<V: ElementaryLanes, F: Tier>(spot: &Spot<V::T>, to_vertex: V3
 mod tests {
     use super::*;
     use crate::elementary::Full;
-    use crate::lanes::{normalize_and_length, Pack};
+    use crate::lanes::Pack;
 
     type One = Pack<f32, 1>;
 
@@ -450,13 +469,7 @@ mod tests {
     /// forms it: n̂ only where |n| is far from 1).
     fn halfway1(n: [f32; 3], h: [f32; 3], s: f32) -> f32 {
         let v = V3::<One>::splat(n);
-        let (squared, near) = squared_minus_one(v);
-        let (unit, scale) = if near.all() {
-            (v, Scale::squared_only(squared))
-        } else {
-            let (unit, length) = normalize_and_length(v);
-            (unit, Scale::from_squared(squared, near, length))
-        };
+        let (unit, scale) = normal_scale(v, false);
         halfway_pow::<_, Full>(v, unit, &Halfway::new(h), s, &scale).0[0]
     }
 
