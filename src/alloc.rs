@@ -10,7 +10,10 @@ use crate::error::Error;
 fn failed<T>(len: usize, what: &str) -> Error {
     // u128: the byte count of a request that overflows usize is still printed exactly.
     let bytes = len as u128 * size_of::<T>() as u128;
-    Error::memory(format!("cannot allocate {bytes} bytes for {what}"))
+    Error::memory_fmt(
+        format_args!("cannot allocate {bytes} bytes for {what}"),
+        "cannot allocate memory",
+    )
 }
 
 /// The product of `factors`, the element count of a buffer for `what`.
@@ -21,7 +24,12 @@ pub(crate) fn count(factors: &[usize], what: &str) -> Result<usize, Error> {
     factors
         .iter()
         .try_fold(1_usize, |n, &f| n.checked_mul(f))
-        .ok_or_else(|| Error::memory(format!("the size of {what} overflows, {factors:?}")))
+        .ok_or_else(|| {
+            Error::memory_fmt(
+                format_args!("the size of {what} overflows, {factors:?}"),
+                "a buffer's size overflows",
+            )
+        })
 }
 
 /// An empty vector with room for exactly `len` elements.
@@ -89,13 +97,13 @@ mod tests {
     #[test]
     fn absurd_sizes_are_memory_errors() {
         let err = try_filled(usize::MAX / 16, 0.0_f64, "the test").unwrap_err();
-        assert_eq!(err.kind, crate::ErrorKind::Memory);
+        assert_eq!(err.kind, crate::error::ErrorKind::Memory);
         assert!(err.message.contains("for the test"), "{}", err.message);
         let err = try_with_capacity::<[f64; 3]>(1 << 58, "rows").unwrap_err();
-        assert_eq!(err.kind, crate::ErrorKind::Memory);
+        assert_eq!(err.kind, crate::error::ErrorKind::Memory);
         assert_eq!(
             count(&[usize::MAX / 2, 3], "out").unwrap_err().kind,
-            crate::ErrorKind::Memory
+            crate::error::ErrorKind::Memory
         );
     }
 

@@ -58,7 +58,6 @@ mod _glshade {
 
     #[pymodule_init]
     fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
-        super::runtime::init();
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
         m.add("MAX_SIZE", crate::raster::MAX_SIZE)?;
         Ok(())

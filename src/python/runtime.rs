@@ -2,6 +2,7 @@
 //! Ctrl-C between slabs of work, and with every failure of the core turned into a Python
 //! exception (a panic included, so none crosses into Python).
 
+use std::borrow::Cow;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::{Arc, Mutex, OnceLock, TryLockError};
 use std::time::Duration;
@@ -20,35 +21,60 @@ const LOCK_PATIENCE: Duration = Duration::from_secs(1);
 /// The core's error as the Python exception its kind names.
 pub fn to_pyerr(e: Error) -> PyErr {
     match e.kind {
-        ErrorKind::Value => PyValueError::new_err(e.message),
-        ErrorKind::Index => PyIndexError::new_err(e.message),
-        ErrorKind::Memory => PyMemoryError::new_err(e.message),
+        ErrorKind::Value => PyValueError::new_err(e.message.into_owned()),
+        ErrorKind::Index => PyIndexError::new_err(e.message.into_owned()),
+        // A static message stays static: a memory error must not need memory to be raised.
+        ErrorKind::Memory => match e.message {
+            Cow::Borrowed(message) => PyMemoryError::new_err(message),
+            Cow::Owned(message) => PyMemoryError::new_err(message),
+        },
         ErrorKind::Interrupted => PyRuntimeError::new_err("glshade: the call was interrupted"),
     }
 }
 
-/// The pid the module was loaded in: rayon's global pool belongs to that process.
-static LOADED_IN: OnceLock<u32> = OnceLock::new();
+/// The process that started rayon's global pool, or `None` when starting it failed.
+static GLOBAL: OnceLock<Option<u32>> = OnceLock::new();
 
-/// Remembers the process the module is loaded in; called once from the module's init.
-pub fn init() {
-    LOADED_IN.get_or_init(std::process::id);
+/// The threads a call runs on.
+enum Threads {
+    /// rayon's global pool, which this process started: the work runs on the calling thread,
+    /// and its parallel loops on the pool.
+    Global,
+    /// A pool of this process's own, which the work is installed in.
+    Own(Arc<rayon::ThreadPool>),
 }
 
-/// A pool of this process's own when it is a `fork()`ed child of the one that loaded the module:
-/// the parent's pool threads do not exist in the child, so work sent to them would never end.
-fn child_pool() -> Result<Option<Arc<rayon::ThreadPool>>, Error> {
+/// rayon's global pool where this process started it, else a pool of its own ([`pool`]).
+///
+/// The global pool is started here, fallibly, on the first call: rayon would start it on first
+/// use and panic if it cannot, and a failed start cannot be retried (every later use panics),
+/// so a process whose start failed (as under a tight address-space limit) uses its own pool.
+/// A `fork()`ed child inherits the global pool without its threads, so it uses its own too.
+fn threads() -> Result<Threads, Error> {
+    let pid = std::process::id();
+    let started = GLOBAL.get_or_init(|| {
+        rayon::ThreadPoolBuilder::new()
+            .build_global()
+            .ok()
+            .map(|()| pid)
+    });
+    if *started == Some(pid) {
+        return Ok(Threads::Global);
+    }
+    pool().map(Threads::Own)
+}
+
+/// This process's own pool of threads, started fallibly (a failure is a `MemoryError` and the
+/// next call tries again), and again in a `fork()`ed child, whose parent's threads are gone.
+fn pool() -> Result<Arc<rayon::ThreadPool>, Error> {
     static POOLS: Mutex<Option<(u32, Arc<rayon::ThreadPool>)>> = Mutex::new(None);
     let pid = std::process::id();
-    if LOADED_IN.get().is_none_or(|&p| p == pid) {
-        return Ok(None);
-    }
     let build = || {
         rayon::ThreadPoolBuilder::new()
             .thread_name(|i| format!("glshade-{i}"))
             .build()
             .map(Arc::new)
-            .map_err(|e| Error::memory(format!("cannot start glshade's threads: {e}")))
+            .map_err(|_| Error::memory("cannot start glshade's threads"))
     };
     // A fork taken while a thread of the forking process held the lock leaves it held for
     // ever in the child (that thread is gone): after a while, the call gets a pool of its own.
@@ -61,20 +87,20 @@ fn child_pool() -> Result<Option<Arc<rayon::ThreadPool>>, Error> {
                 std::thread::sleep(Duration::from_millis(1));
                 waited += Duration::from_millis(1);
             }
-            Err(TryLockError::WouldBlock) => return build().map(Some),
+            Err(TryLockError::WouldBlock) => return build(),
         }
     };
     if let Some((owner, pool)) = slot.as_ref() {
         if *owner == pid {
-            return Ok(Some(Arc::clone(pool)));
+            return Ok(Arc::clone(pool));
         }
     }
     let pool = build()?;
-    // The inherited pool's threads are gone: dropping it would signal threads that do not exist.
+    // An inherited pool's threads are gone: dropping it would signal threads that do not exist.
     if let Some(old) = slot.replace((pid, Arc::clone(&pool))) {
         std::mem::forget(old);
     }
-    Ok(Some(pool))
+    Ok(pool)
 }
 
 /// Runs `work` with the GIL released and returns its result or the exception it maps to.
@@ -96,11 +122,21 @@ pub fn run<R: Send>(
     let (result, signal) = py.detach(|| {
         std::thread::scope(|scope| {
             let caller = std::thread::current();
-            let worker = scope.spawn(move || {
+            // Builder's spawn, not scope.spawn: a thread that cannot start is an error, not a
+            // panic (whose message would need the memory that is missing).
+            let worker = std::thread::Builder::new().spawn_scoped(scope, move || {
                 let result = guarded(work, stop);
                 caller.unpark();
                 result
             });
+            let Ok(worker) = worker else {
+                return (
+                    Err(PyMemoryError::new_err(
+                        "cannot start glshade's worker thread",
+                    )),
+                    None,
+                );
+            };
             let mut signal = None;
             while !worker.is_finished() {
                 std::thread::park_timeout(SIGNAL_POLL);
@@ -128,11 +164,10 @@ fn guarded<R: Send>(
     work: impl FnOnce(&Stop) -> Result<R, Error> + Send,
     stop: &Stop,
 ) -> PyResult<R> {
-    let pool = child_pool().map_err(to_pyerr)?;
     let call = || catch_unwind(AssertUnwindSafe(|| work(stop)));
-    let outcome = match pool {
-        Some(pool) => pool.install(call),
-        None => call(),
+    let outcome = match threads().map_err(to_pyerr)? {
+        Threads::Global => call(),
+        Threads::Own(pool) => pool.install(call),
     };
     match outcome {
         Ok(result) => result.map_err(to_pyerr),
