@@ -62,16 +62,6 @@ fn times_power_of_two(x: f64, k: i32) -> f64 {
     )
 }
 
-/// Per-vertex colours for `GL_COLOR_MATERIAL`: `data` holds `width` (3 or 4) values per vertex,
-/// row after row; a missing alpha is 1.
-#[derive(Clone, Copy, Debug)]
-pub struct VertexColors<'a, T> {
-    /// The colours, C order.
-    pub data: &'a [T],
-    /// Values per vertex: 3 (RGB) or 4 (RGBA).
-    pub width: usize,
-}
-
 /// att_i of eq. 2.4; zero coefficients are skipped so an infinite distance gives 0, not NaN, and
 /// a zero denominator (the light at the vertex with k0 = 0) gives a large finite weight.
 #[inline(always)]

@@ -64,6 +64,7 @@ mod stop;
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
 mod triangle;
+mod vertex_colors;
 mod visibility;
 
 pub use camera::{look_at, orthographic, perspective, Camera};
@@ -77,8 +78,9 @@ pub use raster::{Cull, Viewport};
 pub use real::Real;
 pub use render::{render, RenderOptions, Shading};
 pub use scene::{Scene, Specular, ValidScene};
-pub use shade::{describe, shade, shade_uninit, VertexColors};
+pub use shade::{describe, shade, shade_uninit};
 pub use stop::Stop;
+pub use vertex_colors::VertexColors;
 
 #[cfg(feature = "python")]
 mod python;

@@ -24,8 +24,9 @@ use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
 use crate::scene::{Scene, ValidScene};
-use crate::shade::{shade, VertexColors};
+use crate::shade::shade;
 use crate::stop::Stop;
+use crate::vertex_colors::VertexColors;
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.

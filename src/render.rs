@@ -20,8 +20,9 @@ use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
 use crate::real::Real;
 use crate::scene::ValidScene;
-use crate::shade::{shade, VertexColors};
+use crate::shade::shade;
 use crate::stop::Stop;
+use crate::vertex_colors::VertexColors;
 use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most

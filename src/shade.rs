@@ -26,7 +26,7 @@ use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
 use crate::stop::Stop;
 
-pub use crate::kernel::VertexColors;
+use crate::vertex_colors::VertexColors;
 
 /// Rows per parallel task: enough work to amortise rayon's scheduling for one light, few enough
 /// that a 10^4-row call still spreads over every core.

@@ -15,8 +15,9 @@ use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
-use crate::shade::{as_uninit, run, VertexColors};
+use crate::shade::{as_uninit, run};
 use crate::stop::Stop;
+use crate::vertex_colors::VertexColors;
 
 const FEATURES: u32 = 14;
 
