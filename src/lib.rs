@@ -34,6 +34,7 @@ mod kernel;
 mod lanes;
 mod light;
 mod material;
+mod matrix;
 mod mesh;
 #[cfg(test)]
 mod normal_range_tests;

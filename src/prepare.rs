@@ -10,12 +10,13 @@ use crate::float::{exponent, ldexp};
 use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
+use crate::matrix::scaled_inverse;
 use crate::power::{spot_factor, Halfway, Spot};
 use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
 
-/// Each of the three RGB values of `c`, saturated at ±[`Float::COLOR_SATURATION`](crate::float::Float::COLOR_SATURATION) and rounded
-/// to `T`.
+/// Each of the three RGB values of `c`, saturated at
+/// ±[`Float::COLOR_SATURATION`](crate::float::Float::COLOR_SATURATION) and rounded to `T`.
 #[inline]
 fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
     let sat = T::COLOR_SATURATION.to_f64();
@@ -255,26 +256,6 @@ impl<T: Real> Transform<T> {
     }
 }
 
-/// A⁻¹ and e for M = A·diag(2^e), where e_j = ⌊log2 max_i |m_ij|⌋ scales column j of A to
-/// a largest entry in [1, 2) (exactly), so the inverse of M at any scale, uniform or column by
-/// column, is formed from the same A; `None` when M is singular: a zero column, a zero
-/// determinant of A, or an inverse that is not finite.
-pub(crate) fn scaled_inverse(m: &DMat3) -> Option<(DMat3, [i32; 3])> {
-    let columns = [m.x_axis, m.y_axis, m.z_axis];
-    let top = columns.map(|c| c.abs().max_element());
-    if !top.iter().all(|t| *t > 0.0 && t.is_finite()) {
-        return None;
-    }
-    let e = top.map(exponent);
-    let a = DMat3::from_cols(
-        columns[0].map(|x| ldexp(x, -e[0])),
-        columns[1].map(|x| ldexp(x, -e[1])),
-        columns[2].map(|x| ldexp(x, -e[2])),
-    );
-    let inverse = a.inverse();
-    (a.determinant() != 0.0 && inverse.is_finite()).then_some((inverse, e))
-}
-
 /// Rounds an `f64` vector to the kernel's type, saturating at ±`T::MAX` (instead of ±inf).
 fn cast_saturating<T: Real>(v: DVec3) -> [T; 3] {
     let max = T::MAX.to_f64();
@@ -289,7 +270,7 @@ pub enum Accuracy {
     Fast,
     /// `f64` throughout, whatever the input; `f32` results are rounded once at the end.
     Exact,
-    /// The input's precision with cheaper `exp` and `ln` ([`crate::display`]): every output
+    /// The input's precision with cheaper `exp` and `ln` (`numbers::display`): every output
     /// within 2^-10 of the exact value, a quarter of an 8-bit step.
     Display,
 }
