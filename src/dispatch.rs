@@ -1,13 +1,12 @@
 //! The instruction set the kernels run with, chosen at run time so one build uses AVX-512 or
 //! AVX2 where the CPU has them and SSE2 (or the target's baseline) elsewhere.
 //!
-//! The kernels are written once over [`Lanes`]; an [`InstructionSet`] (in [`crate::lanes`], with
-//! the register types) names the register types they are instantiated with (a block is two
-//! registers, [`BlockLanes`]: 16 `f32` or 8 `f64` lanes each with AVX-512, 8 or 4 with AVX2, 4
-//! or 2 with SSE2), and the work runs inside a function compiled with that set's target
-//! features.
-//! Every lane runs the same IEEE operations, so every instruction set gives the same bits (a
-//! test checks it).
+//! The kernels are written once over [`Lanes`](crate::lanes::Lanes); an [`InstructionSet`]
+//! (in [`crate::lanes`], with the register types) names the register types they are
+//! instantiated with (a block is two registers, `BlockLanes`: 16 `f32` or 8 `f64` lanes each with
+//! AVX-512, 8 or 4 with AVX2, 4 or 2 with SSE2), and the work runs inside a function compiled with
+//! that set's target features. Every lane runs the same IEEE operations, so every instruction set
+//! gives the same bits (a test checks it).
 //!
 //! `unsafe` appears here and in `lanes::x86` (calling a `#[target_feature]` function is sound
 //! only on a CPU with those features, which [`Isa::supported`] has checked), and in two
@@ -15,16 +14,13 @@
 //! the binding's new numpy arrays).
 #![allow(unsafe_code)]
 
-use std::cell::Cell;
-use std::marker::PhantomData;
 use std::sync::OnceLock;
 
+use crate::lanes::InstructionSet;
 #[cfg(not(target_arch = "x86_64"))]
 use crate::lanes::Portable;
 #[cfg(target_arch = "x86_64")]
 use crate::lanes::{Avx2, Avx512, Sse2};
-use crate::lanes::{InstructionSet, Lanes};
-use crate::real::{BlockLanes, Real};
 
 /// The baseline set of the target.
 #[cfg(target_arch = "x86_64")]
@@ -91,23 +87,6 @@ impl Isa {
                 .find(|isa| *isa <= cap && isa.supported())
                 .unwrap_or(Isa::Baseline)
         })
-    }
-
-    /// The lanes per block of `T` at this level ([`BlockLanes`]), asked of the register type.
-    ///
-    /// # Panics
-    /// As [`Isa::run`].
-    pub fn lanes<T: Real>(self) -> usize {
-        struct Count<'a, T>(&'a Cell<usize>, PhantomData<T>);
-        impl<T: Real> LaneWork for Count<'_, T> {
-            #[inline(always)]
-            fn run<S: InstructionSet>(self) {
-                self.0.set(<BlockLanes<T, S> as Lanes>::N);
-            }
-        }
-        let lanes = Cell::new(0);
-        self.run(Count::<T>(&lanes, PhantomData));
-        lanes.get()
     }
 
     /// Runs `work` with the registers of this level.

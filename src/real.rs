@@ -7,6 +7,10 @@
 //! [1e-19, 1e19] in f32; [`normalize_and_length`] prescales such vectors by an exact power of two
 //! (it is the one-lane case of [`crate::lanes::normalize_and_length`]).
 
+use std::cell::Cell;
+use std::marker::PhantomData;
+
+use crate::dispatch::{Isa, LaneWork};
 use crate::elementary::Elementary;
 use crate::float::{Float, Vector3};
 use crate::lanes::{InstructionSet, Lanes, Scalar, V3};
@@ -48,6 +52,24 @@ pub fn normalize_and_length<T: Real>(v: T::Vec3) -> (T::Vec3, T) {
 #[inline]
 pub fn normalize_or_zero<T: Real>(v: T::Vec3) -> T::Vec3 {
     normalize_and_length::<T>(v).0
+}
+
+/// The lanes per block of `T` with instruction set `isa` ([`BlockLanes`]), asked of the register
+/// type.
+///
+/// # Panics
+/// As [`Isa::run`].
+pub fn block_lanes<T: Real>(isa: Isa) -> usize {
+    struct Count<'a, T>(&'a Cell<usize>, PhantomData<T>);
+    impl<T: Real> LaneWork for Count<'_, T> {
+        #[inline(always)]
+        fn run<S: InstructionSet>(self) {
+            self.0.set(<BlockLanes<T, S> as Lanes>::N);
+        }
+    }
+    let lanes = Cell::new(0);
+    isa.run(Count::<T>(&lanes, PhantomData));
+    lanes.get()
 }
 
 #[cfg(test)]

@@ -21,7 +21,7 @@ use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 use crate::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::real::{BlockLanes, Real};
+use crate::real::{block_lanes, BlockLanes, Real};
 use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
 use crate::stop::Stop;
@@ -503,7 +503,7 @@ fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static
     impl<T: Real> OnShape for Name<T> {
         type Output = (&'static str, usize);
         fn call<S: Shape>(self) -> Self::Output {
-            (S::NAME, self.0.lanes::<T>())
+            (S::NAME, block_lanes::<T>(self.0))
         }
     }
     on_shape(plan, prepared, isa, Name::<T>(isa, PhantomData))
