@@ -2,9 +2,9 @@
 //! into a gather: each vertex reads its faces in face order, so sums do not depend on threads.
 
 use crate::alloc::{try_collect, try_filled};
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::pages::Zeroed;
-use crate::stop::Stop;
 
 /// Corners per slab of the sequential counting sort, between polls of the stop: about a
 /// millisecond of work each.

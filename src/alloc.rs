@@ -4,7 +4,7 @@
 
 use rayon::prelude::*;
 
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// The memory error of `len` elements of `T` for `what`.
 fn failed<T>(len: usize, what: &str) -> Error {
@@ -97,13 +97,13 @@ mod tests {
     #[test]
     fn absurd_sizes_are_memory_errors() {
         let err = try_filled(usize::MAX / 16, 0.0_f64, "the test").unwrap_err();
-        assert_eq!(err.kind, crate::error::ErrorKind::Memory);
+        assert_eq!(err.kind, crate::errors::error::ErrorKind::Memory);
         assert!(err.message.contains("for the test"), "{}", err.message);
         let err = try_with_capacity::<[f64; 3]>(1 << 58, "rows").unwrap_err();
-        assert_eq!(err.kind, crate::error::ErrorKind::Memory);
+        assert_eq!(err.kind, crate::errors::error::ErrorKind::Memory);
         assert_eq!(
             count(&[usize::MAX / 2, 3], "out").unwrap_err().kind,
-            crate::error::ErrorKind::Memory
+            crate::errors::error::ErrorKind::Memory
         );
     }
 

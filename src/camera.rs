@@ -8,7 +8,7 @@
 
 use glam::{DMat4, DVec3, DVec4};
 
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// A view and a projection matrix.
 #[derive(Clone, Copy, Debug, PartialEq)]

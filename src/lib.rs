@@ -28,7 +28,6 @@ mod clip;
 mod dispatch;
 mod display;
 mod elementary;
-mod error;
 mod float;
 mod kernel;
 mod lanes;
@@ -60,7 +59,6 @@ mod shape;
 mod shape_tests;
 #[cfg(test)]
 mod specialisation_tests;
-mod stop;
 // The streaming floor of `bench shade`, called from Python only.
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
@@ -69,7 +67,8 @@ mod vertex_colors;
 mod visibility;
 
 pub use camera::{look_at, orthographic, perspective, Camera};
-pub use error::{Error, ErrorKind};
+pub use errors::error::{Error, ErrorKind};
+pub use errors::stop::Stop;
 pub use light::{Light, LIGHT_ROW_LEN};
 pub use material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
 pub use mesh::Mesh;
@@ -80,8 +79,9 @@ pub use real::Real;
 pub use render::{render, RenderOptions, Shading};
 pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit};
-pub use stop::Stop;
 pub use vertex_colors::VertexColors;
+
+mod errors;
 
 #[cfg(feature = "python")]
 mod python;

@@ -1,6 +1,6 @@
 //! One OpenGL light: the `GL_LIGHTi` state of GL 2.1 §2.14.2 (Table 2.10), in eye coordinates.
 
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// The parameters of one light, named after the GL enums, in eye coordinates, as `f64`.
 ///

@@ -1,6 +1,6 @@
 //! The material of one face (GL 2.1 §2.14.1 Table 2.10) and `COLOR_MATERIAL` (§2.14.3).
 
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// The material parameters of one face, named after the GL enums, as `f64` RGBA.
 ///

@@ -5,6 +5,7 @@
 use glam::{DMat4, DVec3};
 
 use crate::dispatch::Isa;
+use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::material::Material;
 use crate::plan::Plan;
@@ -13,7 +14,6 @@ use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
 use crate::specialisation_tests::Numbers;
-use crate::stop::Stop;
 
 /// The positional spot light with attenuation of the report, or a directional light.
 fn scene(spot: bool, specular: Specular, two_side: bool) -> Scene {

@@ -12,10 +12,10 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::adjacency::{index, Adjacency};
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::pages::Zeroed;
 use crate::real::{normalize_and_length, Real};
-use crate::stop::Stop;
 use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 
 /// Rows per parallel task for the per-face and per-vertex loops.

@@ -13,7 +13,7 @@ use std::ops::{Deref, DerefMut};
 use bytemuck::Pod;
 
 use crate::alloc::try_filled;
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// Buffers at least this large are mapped: glibc's largest mmap threshold on 64-bit systems.
 const MAPPED_BYTES: usize = 32 << 20;

@@ -16,7 +16,8 @@ use rayon::prelude::*;
 
 use crate::adjacency::index;
 use crate::alloc::{count, try_collect, try_par_collect};
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::mesh::Mesh;
 use crate::normals::face_normals;
 use crate::pages::Zeroed;
@@ -25,7 +26,6 @@ use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
 use crate::scene::{Scene, ValidScene};
 use crate::shade::shade;
-use crate::stop::Stop;
 use crate::vertex_colors::VertexColors;
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
 

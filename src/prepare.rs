@@ -5,7 +5,7 @@
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::elementary::Full;
-use crate::error::Error;
+use crate::errors::error::Error;
 use crate::float::{exponent, ldexp};
 use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;

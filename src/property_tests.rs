@@ -4,12 +4,12 @@
 
 use proptest::prelude::*;
 
+use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::material::Material;
 use crate::prepare::ShadeOptions;
 use crate::scene::{Scene, Specular};
 use crate::shade::shade;
-use crate::stop::Stop;
 
 fn colour() -> impl Strategy<Value = [f64; 4]> {
     (-1.0..2.0, -1.0..2.0, -1.0..2.0).prop_map(|(r, g, b)| [r, g, b, 1.0])

@@ -4,12 +4,12 @@
 
 use glam::{DMat4, DQuat, DVec3};
 
+use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::prepare::ShadeOptions;
 use crate::real::Real;
 use crate::scene::Scene;
 use crate::shade::shade;
-use crate::stop::Stop;
 
 /// The colours `shade` computes for one vertex.
 fn shade_one<T: Real>(

@@ -10,7 +10,8 @@ use crate::adjacency::index;
 use crate::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::material::ColorMaterial;
 use crate::mesh::Mesh;
 use crate::normals::{check_faces, vertex_normals, Weighting};
@@ -21,7 +22,6 @@ use crate::raster::{Cull, Triangle, Viewport};
 use crate::real::Real;
 use crate::scene::ValidScene;
 use crate::shade::shade;
-use crate::stop::Stop;
 use crate::vertex_colors::VertexColors;
 use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
@@ -362,7 +362,7 @@ mod tests {
             ..quad()
         };
         let err = draw(&mesh, &RenderOptions::default()).unwrap_err();
-        assert_eq!(err.kind, crate::error::ErrorKind::Index);
+        assert_eq!(err.kind, crate::errors::error::ErrorKind::Index);
         let normals = [[0.0, 0.0, 1.0]; 4];
         let mesh = Mesh {
             normals: Some(&normals),
@@ -394,7 +394,7 @@ mod tests {
         let mut depth = vec![0.0_f64; 35];
         visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap();
         stop.request();
-        let interrupted = |e: Error| e.kind == crate::error::ErrorKind::Interrupted;
+        let interrupted = |e: Error| e.kind == crate::errors::error::ErrorKind::Interrupted;
         assert!(interrupted(
             setup(&quad(), to_clip, viewport, Cull::None, &stop).unwrap_err()
         ));

@@ -3,7 +3,7 @@
 
 use std::ops::Deref;
 
-use crate::error::Error;
+use crate::errors::error::Error;
 use crate::light::Light;
 use crate::material::Material;
 

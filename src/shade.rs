@@ -14,7 +14,8 @@ use crate::alloc::try_with_capacity;
 use crate::dispatch::{Isa, LaneWork};
 use crate::display::Display;
 use crate::elementary::{Full, Tier};
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::float::Float;
 use crate::kernel::{Block, Kernel, SideColors};
 use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
@@ -24,7 +25,6 @@ use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::{block_lanes, BlockLanes, Real};
 use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
-use crate::stop::Stop;
 
 use crate::vertex_colors::VertexColors;
 

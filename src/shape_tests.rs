@@ -8,6 +8,7 @@ use glam::DMat4;
 use crate::dispatch::Isa;
 use crate::display::Display;
 use crate::elementary::{Full, Tier};
+use crate::errors::stop::Stop;
 use crate::kernel::Kernel;
 use crate::light::Light;
 use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
@@ -18,7 +19,6 @@ use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run_tier, Inputs};
 use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};
 use crate::specialisation_tests::vertices;
-use crate::stop::Stop;
 
 /// Lights of every kind the mixed shape takes: directional, attenuated point, spot, one with
 /// an ambient term (the benchmark's eight, in short).

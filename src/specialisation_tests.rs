@@ -9,6 +9,7 @@
 use glam::DMat4;
 
 use crate::dispatch::Isa;
+use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::plan::Plan;
@@ -16,7 +17,6 @@ use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
-use crate::stop::Stop;
 use crate::vertex_colors::VertexColors;
 
 const FEATURES: u32 = 14;

@@ -8,10 +8,10 @@
 use rayon::prelude::*;
 
 use crate::alloc::{try_collect, try_filled};
-use crate::error::Error;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
-use crate::stop::Stop;
 
 /// The triangle id of a pixel no triangle covers.
 pub const NO_TRIANGLE: u32 = u32::MAX;

@@ -3,7 +3,7 @@
 
 use std::sync::atomic::{AtomicBool, Ordering};
 
-use crate::error::Error;
+use crate::errors::error::Error;
 
 /// A request to end a long computation early, shared between its caller and its threads.
 ///
@@ -54,7 +54,7 @@ mod tests {
         assert!(stop.is_requested());
         assert_eq!(
             stop.check().unwrap_err().kind,
-            crate::ErrorKind::Interrupted
+            crate::errors::error::ErrorKind::Interrupted
         );
         assert_eq!(stop.check().unwrap_err().message, "interrupted");
     }
