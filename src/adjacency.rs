@@ -1,10 +1,10 @@
 //! The vertex-to-face adjacency of a triangle mesh, which turns the sum over a vertex's faces
 //! into a gather: each vertex reads its faces in face order, so sums do not depend on threads.
 
-use crate::alloc::{try_collect, try_filled};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::pages::Zeroed;
+use crate::memory::alloc::{try_collect, try_filled};
+use crate::memory::pages::Zeroed;
 
 /// Corners per slab of the sequential counting sort, between polls of the stop: about a
 /// millisecond of work each.

@@ -22,7 +22,6 @@
 //! `mesh`; `passes`; `render`.
 
 mod adjacency;
-mod alloc;
 mod camera;
 mod clip;
 mod dispatch;
@@ -38,7 +37,6 @@ mod mesh;
 #[cfg(test)]
 mod normal_range_tests;
 mod normals;
-mod pages;
 mod passes;
 mod plan;
 mod power;
@@ -82,6 +80,8 @@ pub use shade::{describe, shade, shade_uninit};
 pub use vertex_colors::VertexColors;
 
 mod errors;
+
+mod memory;
 
 #[cfg(feature = "python")]
 mod python;

@@ -14,7 +14,7 @@ use rayon::prelude::*;
 use crate::adjacency::{index, Adjacency};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::pages::Zeroed;
+use crate::memory::pages::Zeroed;
 use crate::real::{normalize_and_length, Real};
 use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 

@@ -15,12 +15,12 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::adjacency::index;
-use crate::alloc::{count, try_collect, try_par_collect};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
+use crate::memory::alloc::{count, try_collect, try_par_collect};
+use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
 use crate::normals::face_normals;
-use crate::pages::Zeroed;
 use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;

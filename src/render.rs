@@ -7,15 +7,15 @@ use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
 use crate::adjacency::index;
-use crate::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::material::ColorMaterial;
+use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
+use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
 use crate::normals::{check_faces, vertex_normals, Weighting};
-use crate::pages::Zeroed;
 use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};

@@ -289,14 +289,15 @@ fn a_stop_from_another_thread_ends_a_long_shade_soon() {
 
 #[test]
 fn sizes_beyond_memory_are_memory_errors() {
-    let err = crate::alloc::try_filled(usize::MAX / 16, [0.0_f64; 3], "the rows").unwrap_err();
+    let err =
+        crate::memory::alloc::try_filled(usize::MAX / 16, [0.0_f64; 3], "the rows").unwrap_err();
     assert_eq!(err.kind, ErrorKind::Memory);
     assert!(
         err.message.starts_with("cannot allocate "),
         "{}",
         err.message
     );
-    let err = crate::pages::Zeroed::<[f64; 4]>::new(1 << 56, "the face terms")
+    let err = crate::memory::pages::Zeroed::<[f64; 4]>::new(1 << 56, "the face terms")
         .err()
         .unwrap();
     assert_eq!(err.kind, ErrorKind::Memory);

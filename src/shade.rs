@@ -10,7 +10,6 @@ use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
-use crate::alloc::try_with_capacity;
 use crate::dispatch::{Isa, LaneWork};
 use crate::display::Display;
 use crate::elementary::{Full, Tier};
@@ -19,7 +18,8 @@ use crate::errors::stop::Stop;
 use crate::float::Float;
 use crate::kernel::{Block, Kernel, SideColors};
 use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
-use crate::pages::Zeroed;
+use crate::memory::alloc::try_with_capacity;
+use crate::memory::pages::Zeroed;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::{block_lanes, BlockLanes, Real};

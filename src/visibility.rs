@@ -7,9 +7,9 @@
 
 use rayon::prelude::*;
 
-use crate::alloc::{try_collect, try_filled};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
+use crate::memory::alloc::{try_collect, try_filled};
 use crate::raster::{Triangle, Viewport};
 use crate::real::Real;
 

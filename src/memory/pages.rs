@@ -12,8 +12,8 @@ use std::ops::{Deref, DerefMut};
 
 use bytemuck::Pod;
 
-use crate::alloc::try_filled;
 use crate::errors::error::Error;
+use crate::memory::alloc::try_filled;
 
 /// Buffers at least this large are mapped: glibc's largest mmap threshold on 64-bit systems.
 const MAPPED_BYTES: usize = 32 << 20;
@@ -89,7 +89,12 @@ mod tests {
         // 2^60 bytes: beyond any address space, so both the mapping and the heap refuse.
         for len in [1 << 57, usize::MAX / 4] {
             let err = Zeroed::<u64>::new(len, "the test").err().unwrap();
-            assert_eq!(err.kind, crate::ErrorKind::Memory, "{}", err.message);
+            assert_eq!(
+                err.kind,
+                crate::errors::error::ErrorKind::Memory,
+                "{}",
+                err.message
+            );
         }
     }
 }

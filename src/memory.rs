@@ -1,0 +1,8 @@
+//! Memory: fallible allocation of every buffer whose size grows with the input
+//! ([`alloc`]: a request the allocator cannot meet is an error, never an abort) and zeroed
+//! scratch pages for the mesh passes ([`pages`]).
+//!
+//! Uses only [`crate::errors`].
+
+pub mod alloc;
+pub mod pages;
