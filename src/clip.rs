@@ -12,7 +12,7 @@
 
 use glam::{DVec3, DVec4};
 
-use crate::float::{exponent, ldexp};
+use crate::simd::float::{exponent, ldexp};
 
 /// The guard band, in units of w (normalised device coordinates): side planes at ±4 keep
 /// window coordinates within 2.5 viewports of the origin.

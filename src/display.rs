@@ -13,8 +13,8 @@
 #![allow(clippy::excessive_precision, clippy::unreadable_literal)]
 
 use crate::elementary::{ElementaryLanes, Tier};
-use crate::float::Float;
-use crate::lanes::{LaneBits, Lanes};
+use crate::simd::float::Float;
+use crate::simd::lanes::{LaneBits, Lanes};
 
 /// The display tier's functions; see the module.
 pub struct Display;
@@ -102,16 +102,16 @@ impl Tier for Display {
 
 #[cfg(test)]
 mod tests {
-    use crate::lanes::{Lanes, Pack};
+    use crate::simd::lanes::{Lanes, Pack};
 
-    fn exp1<T: crate::float::Float>(x: T) -> T
+    fn exp1<T: crate::simd::float::Float>(x: T) -> T
     where
         Pack<T, 1>: Lanes<T = T>,
     {
         super::exp(Pack([x])).0[0]
     }
 
-    fn ln1<T: crate::float::Float>(x: T) -> T
+    fn ln1<T: crate::simd::float::Float>(x: T) -> T
     where
         Pack<T, 1>: Lanes<T = T>,
     {

@@ -10,8 +10,8 @@
 // Coefficients are quoted as published (Cephes, fdlibm); the bit manipulation is on purpose.
 #![allow(clippy::excessive_precision, clippy::unreadable_literal)]
 
-use crate::float::Float;
-use crate::lanes::{LaneBits, Lanes};
+use crate::simd::float::Float;
+use crate::simd::lanes::{LaneBits, Lanes};
 
 /// 1.5 · 2^23: `x + MAGIC − MAGIC` rounds an `f32` to the nearest integer (|x| < 2^22), and the
 /// low bits of `x + MAGIC` hold that integer.
@@ -354,14 +354,14 @@ impl Tier for Full {
 #[cfg(test)]
 mod tests {
     use super::ElementaryLanes;
-    use crate::dispatch::{Isa, LaneWork};
-    use crate::lanes::{InstructionSet, Lanes, Portable, MAX_LANES};
     use crate::real::Real;
+    use crate::simd::dispatch::{Isa, LaneWork};
+    use crate::simd::lanes::{InstructionSet, Lanes, Portable, MAX_LANES};
     use scalar::{exp_f32, exp_f64, ln_1p_f32, ln_1p_f64, ln_1p_le_half_f32, ln_f32, ln_f64};
 
     /// The functions on one value.
     mod scalar {
-        use crate::lanes::Pack;
+        use crate::simd::lanes::Pack;
 
         macro_rules! one {
             ($($name:ident: $t:ty;)*) => {$(

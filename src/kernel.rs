@@ -18,11 +18,6 @@
 use std::marker::PhantomData;
 
 use crate::elementary::{Full, Tier};
-use crate::float::Float;
-use crate::lanes::{
-    normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
-    MAX_LANES, V3,
-};
 use crate::material::ColorMaterialMode;
 use crate::plan::{LightKind, Plan};
 use crate::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
@@ -30,6 +25,11 @@ use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
 use crate::shape::{flag, General, Shape};
+use crate::simd::float::Float;
+use crate::simd::lanes::{
+    normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
+    MAX_LANES, V3,
+};
 
 /// The exponent of the largest eye-space normal the kernel lights as it is, 2^63 in f32 and
 /// 2^511 in f64 (|n|² ≤ 1/`MIN_POSITIVE`): Phong's R = 2(n·VP)n − VP then stays below
@@ -674,7 +674,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lanes::Pack;
+    use crate::simd::lanes::Pack;
 
     #[test]
     fn attenuation_skips_zero_coefficients() {

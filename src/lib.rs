@@ -24,12 +24,9 @@
 mod adjacency;
 mod camera;
 mod clip;
-mod dispatch;
 mod display;
 mod elementary;
-mod float;
 mod kernel;
-mod lanes;
 mod light;
 mod material;
 mod matrix;
@@ -82,6 +79,8 @@ pub use vertex_colors::VertexColors;
 mod errors;
 
 mod memory;
+
+mod simd;
 
 #[cfg(feature = "python")]
 mod python;

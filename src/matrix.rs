@@ -3,7 +3,7 @@
 
 use glam::DMat3;
 
-use crate::float::{exponent, ldexp};
+use crate::simd::float::{exponent, ldexp};
 /// A⁻¹ and e for M = A·diag(2^e), where e_j = ⌊log2 max_i |m_ij|⌋ scales column j of A to
 /// a largest entry in [1, 2) (exactly), so the inverse of M at any scale, uniform or column by
 /// column, is formed from the same A; `None` when M is singular: a zero column, a zero

@@ -4,7 +4,6 @@
 
 use glam::{DMat4, DVec3};
 
-use crate::dispatch::Isa;
 use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::material::Material;
@@ -13,6 +12,7 @@ use crate::prepare::{Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
+use crate::simd::dispatch::Isa;
 use crate::specialisation_tests::Numbers;
 
 /// The positional spot light with attenuation of the report, or a directional light.

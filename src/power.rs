@@ -6,8 +6,8 @@
 use std::ops::{Add, Sub};
 
 use crate::elementary::{ElementaryLanes, Tier};
-use crate::float::Float;
-use crate::lanes::{normalize_and_length, LaneMask, Lanes, V3};
+use crate::simd::float::Float;
+use crate::simd::lanes::{normalize_and_length, LaneMask, Lanes, V3};
 
 /// A spot light's cone, in the kernel's type.
 #[derive(Clone, Copy, Debug)]
@@ -321,7 +321,7 @@ pub fn spot_factor<V: ElementaryLanes, F: Tier>(spot: &Spot<V::T>, to_vertex: V3
 mod tests {
     use super::*;
     use crate::elementary::Full;
-    use crate::lanes::Pack;
+    use crate::simd::lanes::Pack;
 
     type One = Pack<f32, 1>;
 

@@ -6,17 +6,17 @@ use glam::{DMat3, DMat4, DVec3};
 
 use crate::elementary::Full;
 use crate::errors::error::Error;
-use crate::float::{exponent, ldexp};
-use crate::lanes::{Lanes, Scalar, V3};
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
 use crate::matrix::scaled_inverse;
 use crate::power::{spot_factor, Halfway, Spot};
 use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
+use crate::simd::float::{exponent, ldexp};
+use crate::simd::lanes::{Lanes, Scalar, V3};
 
 /// Each of the three RGB values of `c`, saturated at
-/// ±[`Float::COLOR_SATURATION`](crate::float::Float::COLOR_SATURATION) and rounded to `T`.
+/// ±[`Float::COLOR_SATURATION`](crate::simd::float::Float::COLOR_SATURATION) and rounded to `T`.
 #[inline]
 fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
     let sat = T::COLOR_SATURATION.to_f64();
@@ -479,7 +479,7 @@ impl<T: Real> Prepared<T> {
 mod tests {
     use super::*;
 
-    use crate::lanes::Pack;
+    use crate::simd::lanes::Pack;
 
     fn one(v: [f32; 3]) -> V3<Pack<f32, 1>> {
         V3::splat(v)

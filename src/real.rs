@@ -5,15 +5,15 @@
 //! Also the scale-safe vector normalisation that the whole equation relies on: glam's
 //! `normalize` computes `sqrt(dot(v, v))`, which under- or overflows for |v| outside roughly
 //! [1e-19, 1e19] in f32; [`normalize_and_length`] prescales such vectors by an exact power of two
-//! (it is the one-lane case of [`crate::lanes::normalize_and_length`]).
+//! (it is the one-lane case of [`crate::simd::lanes::normalize_and_length`]).
 
 use std::cell::Cell;
 use std::marker::PhantomData;
 
-use crate::dispatch::{Isa, LaneWork};
 use crate::elementary::Elementary;
-use crate::float::{Float, Vector3};
-use crate::lanes::{InstructionSet, Lanes, Scalar, V3};
+use crate::simd::dispatch::{Isa, LaneWork};
+use crate::simd::float::{Float, Vector3};
+use crate::simd::lanes::{InstructionSet, Lanes, Scalar, V3};
 
 /// A floating-point type the kernels compute in, `f32` or `f64`, with its lanes.
 pub trait Real: Float + Elementary {
@@ -43,7 +43,7 @@ impl Real for f64 {
 #[inline]
 pub fn normalize_and_length<T: Real>(v: T::Vec3) -> (T::Vec3, T) {
     let (unit, length) =
-        crate::lanes::normalize_and_length(V3::<T::Vector<Scalar>>::splat(v.to_array()));
+        crate::simd::lanes::normalize_and_length(V3::<T::Vector<Scalar>>::splat(v.to_array()));
     (T::Vec3::from_array(unit.lane(0)), length.lane(0))
 }
 

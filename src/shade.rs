@@ -2,7 +2,7 @@
 //!
 //! The vertices are split into tasks of [`ROWS_PER_TASK`] rows spread over rayon's threads; each
 //! task runs the kernel ([`crate::kernel`]) block by block with the widest instruction set the
-//! CPU has ([`crate::dispatch`]). Every row is computed independently of every other, so the
+//! CPU has ([`crate::simd::dispatch`]). Every row is computed independently of every other, so the
 //! result does not depend on the number of threads or the instruction set.
 
 use std::marker::PhantomData;
@@ -10,14 +10,11 @@ use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
-use crate::dispatch::{Isa, LaneWork};
 use crate::display::Display;
 use crate::elementary::{Full, Tier};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::float::Float;
 use crate::kernel::{Block, Kernel, SideColors};
-use crate::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
 use crate::plan::Plan;
@@ -25,6 +22,9 @@ use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::{block_lanes, BlockLanes, Real};
 use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
+use crate::simd::dispatch::{Isa, LaneWork};
+use crate::simd::float::Float;
+use crate::simd::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 
 use crate::vertex_colors::VertexColors;
 

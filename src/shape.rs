@@ -7,11 +7,11 @@
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
 //! (`shape_tests` checks it).
 
-use crate::dispatch::{Isa, LaneWork};
 use crate::plan::{LightKind, Plan};
 use crate::prepare::{Prepared, Viewer};
 use crate::real::Real;
 use crate::scene::Specular;
+use crate::simd::dispatch::{Isa, LaneWork};
 
 /// The plan's flags a kernel is compiled with: `Some` is a constant, `None` is read from the
 /// plan per block.
@@ -41,7 +41,7 @@ pub struct Known {
     pub gate: Option<bool>,
     /// `GL_SEPARATE_SPECULAR_COLOR`.
     pub separate_specular: Option<bool>,
-    /// At most [`crate::float::Float::SUM_BLOCK`] lights, summed in the kernel's type.
+    /// At most [`crate::simd::float::Float::SUM_BLOCK`] lights, summed in the kernel's type.
     pub few_lights: Option<bool>,
 }
 

@@ -5,7 +5,6 @@
 
 use glam::DMat4;
 
-use crate::dispatch::Isa;
 use crate::display::Display;
 use crate::elementary::{Full, Tier};
 use crate::errors::stop::Stop;
@@ -18,6 +17,7 @@ use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run_tier, Inputs};
 use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};
+use crate::simd::dispatch::Isa;
 use crate::specialisation_tests::vertices;
 
 /// Lights of every kind the mixed shape takes: directional, attenuated point, spot, one with

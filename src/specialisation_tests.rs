@@ -8,7 +8,6 @@
 
 use glam::DMat4;
 
-use crate::dispatch::Isa;
 use crate::errors::stop::Stop;
 use crate::light::Light;
 use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
@@ -17,6 +16,7 @@ use crate::prepare::{Accuracy, Prepared, ShadeOptions};
 use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
+use crate::simd::dispatch::Isa;
 use crate::vertex_colors::VertexColors;
 
 const FEATURES: u32 = 14;

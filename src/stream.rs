@@ -4,13 +4,13 @@
 
 use std::mem::MaybeUninit;
 
-use crate::dispatch::Isa;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::kernel::{Block, SideColors};
-use crate::lanes::Lanes;
 use crate::real::Real;
 use crate::shade::{run_tier, BlockShader, Inputs};
+use crate::simd::dispatch::Isa;
+use crate::simd::lanes::Lanes;
 
 /// A block shader that copies: RGBA = (n.x, n.y, n.z, p.x + p.y + p.z) with positions, else
 /// (n.x, n.y, n.z, 1): every value read reaches the output, so none is skipped.

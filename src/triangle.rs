@@ -3,8 +3,8 @@
 
 use glam::DVec3;
 
-use crate::float::{exponent, ldexp};
 use crate::real::{normalize_and_length, normalize_or_zero};
+use crate::simd::float::{exponent, ldexp};
 
 /// A face is degenerate when the sine of the angle between its first two edges is at most this
 /// many ulp of the dtype: at its precision the cross product is rounding noise. The test is

@@ -1,8 +1,8 @@
 //! The two arithmetic types of the kernels, `f32` (glam `Vec3`) and `f64` (glam `DVec3`), as
 //! single values behind one trait, so every formula is written once and compiled for both.
 //!
-//! The bottom of the numeric layers: it knows nothing of lanes ([`crate::lanes`] builds on it,
-//! and [`crate::real`] ties each type to its lanes).
+//! The bottom of the numeric layers: it knows nothing of lanes ([`crate::simd::lanes`] builds on
+//! it, and [`crate::real`] ties each type to its lanes).
 
 use glam::{DVec3, Vec3};
 
@@ -207,7 +207,8 @@ impl Float for f64 {
     const EXPONENT_BIAS: u64 = 1023;
     const MANTISSA_BITS: u32 = f64::MANTISSA_DIGITS - 1;
     const INFINITY: Self = f64::INFINITY;
-    // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is finite).
+    // 2^-1074 · 2^600 = 2^-474 (its square is normal); 2^1024 · 2^-600 = 2^424 (its square is
+    // finite).
     const UPSCALE: Self = f64::from_bits((1023 + 600) << 52);
     const DOWNSCALE: Self = f64::from_bits((1023 - 600) << 52);
     const SATURATION: Self = f64::from_bits((1023 + 240) << 52);

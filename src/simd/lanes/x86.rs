@@ -9,7 +9,7 @@
 //!
 //! SAFETY (for the whole module): the intrinsics of AVX2 and AVX-512 may only run on a CPU that
 //! has them. The register types are `pub(crate)` and reach the kernel only through
-//! [`crate::dispatch::Isa::run`], which checks the CPU first and calls the kernel inside a
+//! [`crate::simd::dispatch::Isa::run`], which checks the CPU first and calls the kernel inside a
 //! function compiled with those features. Loads and stores check their slice lengths.
 #![allow(unsafe_code, clippy::cast_possible_wrap)]
 

@@ -3,7 +3,7 @@
 //! [`Lanes`] is the vector of `f32` or `f64` the kernel computes with; its implementations are
 //! the registers of each instruction set ([`x86`]: SSE2, AVX2, AVX-512) and plain arrays
 //! ([`Pack`], for other CPUs and for one-lane evaluation); an [`InstructionSet`] names the
-//! register type of `f32` and of `f64` in each (`crate::dispatch` picks one at run time). The
+//! register type of `f32` and of `f64` in each (`crate::simd::dispatch` picks one at run time). The
 //! kernel and the elementary functions are written once against the trait. Only IEEE basic
 //! operations (+, −, ×, ÷, √, the fused multiply-add, comparisons, selects, integer operations
 //! on the bits) are offered, so every implementation gives the same bits: the fused
@@ -23,7 +23,7 @@ use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 pub use pair::Pair;
 pub use portable::Pack;
 
-use crate::float::Float;
+use crate::simd::float::Float;
 
 /// The most lanes any implementation has: the size of the buffers that hold one block.
 pub const MAX_LANES: usize = 64;

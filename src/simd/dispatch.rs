@@ -1,8 +1,8 @@
 //! The instruction set the kernels run with, chosen at run time so one build uses AVX-512 or
 //! AVX2 where the CPU has them and SSE2 (or the target's baseline) elsewhere.
 //!
-//! The kernels are written once over [`Lanes`](crate::lanes::Lanes); an [`InstructionSet`]
-//! (in [`crate::lanes`], with the register types) names the register types they are
+//! The kernels are written once over [`Lanes`](crate::simd::lanes::Lanes); an [`InstructionSet`]
+//! (in [`crate::simd::lanes`], with the register types) names the register types they are
 //! instantiated with (a block is two registers, `BlockLanes`: 16 `f32` or 8 `f64` lanes each with
 //! AVX-512, 8 or 4 with AVX2, 4 or 2 with SSE2), and the work runs inside a function compiled with
 //! that set's target features. Every lane runs the same IEEE operations, so every instruction set
@@ -16,11 +16,11 @@
 
 use std::sync::OnceLock;
 
-use crate::lanes::InstructionSet;
+use crate::simd::lanes::InstructionSet;
 #[cfg(not(target_arch = "x86_64"))]
-use crate::lanes::Portable;
+use crate::simd::lanes::Portable;
 #[cfg(target_arch = "x86_64")]
-use crate::lanes::{Avx2, Avx512, Sse2};
+use crate::simd::lanes::{Avx2, Avx512, Sse2};
 
 /// The baseline set of the target.
 #[cfg(target_arch = "x86_64")]
