@@ -68,7 +68,7 @@ pub fn check_affine(m: &DMat4, name: &str) -> Result<(), Error> {
     // Inverted at a power-of-two scale: the determinant itself under- or overflows for
     // entries beyond about 1e±100, which says nothing about invertibility.
     let m3 = glam::DMat3::from_mat4(*m);
-    if crate::matrix::scaled_inverse(&m3).is_none() {
+    if crate::numbers::matrix::scaled_inverse(&m3).is_none() {
         return Err(Error::value(format!(
             "{name} must be invertible (normals go through its inverse transpose), got \
              determinant {} for the upper-left 3x3",

@@ -24,12 +24,9 @@
 mod adjacency;
 mod camera;
 mod clip;
-mod display;
-mod elementary;
 mod kernel;
 mod light;
 mod material;
-mod matrix;
 mod mesh;
 #[cfg(test)]
 mod normal_range_tests;
@@ -43,7 +40,6 @@ mod property_tests;
 #[cfg(test)]
 mod range_tests;
 mod raster;
-mod real;
 mod render;
 #[cfg(test)]
 mod robust_tests;
@@ -68,9 +64,9 @@ pub use light::{Light, LIGHT_ROW_LEN};
 pub use material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
 pub use mesh::Mesh;
 pub use normals::{face_normals, vertex_normals, Weighting};
+pub use numbers::real::Real;
 pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
-pub use real::Real;
 pub use render::{render, RenderOptions, Shading};
 pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit};
@@ -81,6 +77,8 @@ mod errors;
 mod memory;
 
 mod simd;
+
+mod numbers;
 
 #[cfg(feature = "python")]
 mod python;

@@ -15,7 +15,7 @@ use crate::adjacency::{index, Adjacency};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::memory::pages::Zeroed;
-use crate::real::{normalize_and_length, Real};
+use crate::numbers::real::{normalize_and_length, Real};
 use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 
 /// Rows per parallel task for the per-face and per-vertex loops.

@@ -9,8 +9,8 @@
 use std::fmt;
 
 use crate::material::ColorMaterialMode;
+use crate::numbers::real::Real;
 use crate::prepare::{Prepared, Source, Viewer};
-use crate::real::Real;
 use crate::scene::Specular;
 
 /// The terms one light contributes.

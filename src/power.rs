@@ -5,7 +5,7 @@
 
 use std::ops::{Add, Sub};
 
-use crate::elementary::{ElementaryLanes, Tier};
+use crate::numbers::elementary::{ElementaryLanes, Tier};
 use crate::simd::float::Float;
 use crate::simd::lanes::{normalize_and_length, LaneMask, Lanes, V3};
 
@@ -320,7 +320,7 @@ pub fn spot_factor<V: ElementaryLanes, F: Tier>(spot: &Spot<V::T>, to_vertex: V3
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::elementary::Full;
+    use crate::numbers::elementary::Full;
     use crate::simd::lanes::Pack;
 
     type One = Pack<f32, 1>;

@@ -4,13 +4,13 @@
 
 use glam::{DMat3, DMat4, DVec3};
 
-use crate::elementary::Full;
 use crate::errors::error::Error;
 use crate::light::Light;
 use crate::material::{ColorMaterial, Material};
-use crate::matrix::scaled_inverse;
+use crate::numbers::elementary::Full;
+use crate::numbers::matrix::scaled_inverse;
+use crate::numbers::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::power::{spot_factor, Halfway, Spot};
-use crate::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::scene::{Scene, Specular, ValidScene};
 use crate::simd::float::{exponent, ldexp};
 use crate::simd::lanes::{Lanes, Scalar, V3};
@@ -334,7 +334,7 @@ pub struct Prepared<T: Real> {
     pub specular: Specular,
     /// f_i of eq. 2.2 on (GL) or off (learnopengl); see [`Scene::specular_gate`].
     pub specular_gate: bool,
-    /// The accuracy mode (`Display`: the kernel's powers use [`crate::display::Display`]).
+    /// The accuracy mode (`Display`: the kernel's powers use [`crate::numbers::display::Display`]).
     pub accuracy: Accuracy,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,

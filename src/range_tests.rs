@@ -6,8 +6,8 @@ use glam::{DMat4, DQuat, DVec3};
 
 use crate::errors::stop::Stop;
 use crate::light::Light;
+use crate::numbers::real::Real;
 use crate::prepare::ShadeOptions;
-use crate::real::Real;
 use crate::scene::Scene;
 use crate::shade::shade;
 

@@ -16,10 +16,10 @@ use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacit
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
 use crate::normals::{check_faces, vertex_normals, Weighting};
+use crate::numbers::real::Real;
 use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
-use crate::real::Real;
 use crate::scene::ValidScene;
 use crate::shade::shade;
 use crate::vertex_colors::VertexColors;

@@ -10,16 +10,16 @@ use std::mem::MaybeUninit;
 
 use rayon::prelude::*;
 
-use crate::display::Display;
-use crate::elementary::{Full, Tier};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::kernel::{Block, Kernel, SideColors};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
+use crate::numbers::display::Display;
+use crate::numbers::elementary::{Full, Tier};
+use crate::numbers::real::{block_lanes, BlockLanes, Real};
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::real::{block_lanes, BlockLanes, Real};
 use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
 use crate::simd::dispatch::{Isa, LaneWork};
@@ -254,7 +254,7 @@ fn check_arrays<T: Real>(
 ///
 /// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
 /// [`Accuracy::Exact`] in `f64` whatever `T` is, [`Accuracy::Display`] in `T` with the cheaper
-/// elementary functions of [`crate::display`].
+/// elementary functions of [`crate::numbers::display`].
 ///
 /// `stop` is polled before every task of `ROWS_PER_TASK` (8192) rows; once it is requested the
 /// remaining tasks are skipped and `out` is left partly written.

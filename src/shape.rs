@@ -7,9 +7,9 @@
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
 //! (`shape_tests` checks it).
 
+use crate::numbers::real::Real;
 use crate::plan::{LightKind, Plan};
 use crate::prepare::{Prepared, Viewer};
-use crate::real::Real;
 use crate::scene::Specular;
 use crate::simd::dispatch::{Isa, LaneWork};
 

@@ -5,15 +5,15 @@
 
 use glam::DMat4;
 
-use crate::display::Display;
-use crate::elementary::{Full, Tier};
 use crate::errors::stop::Stop;
 use crate::kernel::Kernel;
 use crate::light::Light;
 use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::numbers::display::Display;
+use crate::numbers::elementary::{Full, Tier};
+use crate::numbers::real::Real;
 use crate::plan::Plan;
 use crate::prepare::{Prepared, ShadeOptions};
-use crate::real::Real;
 use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run_tier, Inputs};
 use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};

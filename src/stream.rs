@@ -7,7 +7,7 @@ use std::mem::MaybeUninit;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::kernel::{Block, SideColors};
-use crate::real::Real;
+use crate::numbers::real::Real;
 use crate::shade::{run_tier, BlockShader, Inputs};
 use crate::simd::dispatch::Isa;
 use crate::simd::lanes::Lanes;

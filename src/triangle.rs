@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 
-use crate::real::{normalize_and_length, normalize_or_zero};
+use crate::numbers::real::{normalize_and_length, normalize_or_zero};
 use crate::simd::float::{exponent, ldexp};
 
 /// A face is degenerate when the sine of the angle between its first two edges is at most this

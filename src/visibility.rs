@@ -10,8 +10,8 @@ use rayon::prelude::*;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::memory::alloc::{try_collect, try_filled};
+use crate::numbers::real::Real;
 use crate::raster::{Triangle, Viewport};
-use crate::real::Real;
 
 /// The triangle id of a pixel no triangle covers.
 pub const NO_TRIANGLE: u32 = u32::MAX;

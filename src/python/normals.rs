@@ -7,7 +7,7 @@ use super::arrays::{float_of, read, rows, zeros, Float};
 use super::faces;
 use super::runtime::{run, to_pyerr};
 use crate::normals::Weighting;
-use crate::real::Real;
+use crate::numbers::real::Real;
 
 /// Faces above which a call answers Ctrl-C while it runs (see `shading::LONG_CALL`).
 const LONG_CALL: usize = 1 << 15;

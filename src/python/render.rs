@@ -14,8 +14,8 @@ use super::{faces, matrix};
 use crate::camera::Camera;
 use crate::material::ColorMaterial;
 use crate::mesh::Mesh;
+use crate::numbers::real::Real;
 use crate::raster::{Cull, Viewport};
-use crate::real::Real;
 use crate::render::{RenderOptions, Shading};
 
 fn render_typed<'py, T: Element + Real>(

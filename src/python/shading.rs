@@ -9,8 +9,8 @@ use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use crate::material::ColorMaterial;
+use crate::numbers::real::Real;
 use crate::prepare::{Accuracy, ShadeOptions};
-use crate::real::Real;
 
 /// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
 /// of work: below it, the helper thread that watches for signals would cost more than it saves).

@@ -2,7 +2,7 @@
 //! single values behind one trait, so every formula is written once and compiled for both.
 //!
 //! The bottom of the numeric layers: it knows nothing of lanes ([`crate::simd::lanes`] builds on
-//! it, and [`crate::real`] ties each type to its lanes).
+//! it, and [`crate::numbers::real`] ties each type to its lanes).
 
 use glam::{DVec3, Vec3};
 

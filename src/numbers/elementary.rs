@@ -325,7 +325,7 @@ where
 }
 
 /// The elementary functions a kernel's powers use: [`Full`] (`"fast"` and `"exact"`) or
-/// [`crate::display::Display`] (`"display"`). A kernel is compiled once per tier, from one
+/// [`crate::numbers::display::Display`] (`"display"`). A kernel is compiled once per tier, from one
 /// definition.
 pub trait Tier: Send + Sync + 'static {
     /// The accuracy mode's name, as `Scene.plan()` prints it.
@@ -354,7 +354,7 @@ impl Tier for Full {
 #[cfg(test)]
 mod tests {
     use super::ElementaryLanes;
-    use crate::real::Real;
+    use crate::numbers::real::Real;
     use crate::simd::dispatch::{Isa, LaneWork};
     use crate::simd::lanes::{InstructionSet, Lanes, Portable, MAX_LANES};
     use scalar::{exp_f32, exp_f64, ln_1p_f32, ln_1p_f64, ln_1p_le_half_f32, ln_f32, ln_f64};

@@ -12,7 +12,7 @@
 // Coefficients are fitted to the minimax relative error (reweighted least squares).
 #![allow(clippy::excessive_precision, clippy::unreadable_literal)]
 
-use crate::elementary::{ElementaryLanes, Tier};
+use crate::numbers::elementary::{ElementaryLanes, Tier};
 use crate::simd::float::Float;
 use crate::simd::lanes::{LaneBits, Lanes};
 

@@ -10,7 +10,7 @@
 use std::cell::Cell;
 use std::marker::PhantomData;
 
-use crate::elementary::Elementary;
+use crate::numbers::elementary::Elementary;
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::{Float, Vector3};
 use crate::simd::lanes::{InstructionSet, Lanes, Scalar, V3};
