@@ -3,7 +3,7 @@
 //!
 //! Matrices are glam's column-major `DMat4`; a point p of the mesh reaches clip coordinates as
 //! `projection · view · model · (p, 1)`. The view maps world to eye coordinates, where lights
-//! and the viewer of the [`Scene`](crate::scene::Scene) live, the camera sits at the origin and
+//! and the viewer of the [`Scene`](crate::gl::scene::Scene) live, the camera sits at the origin and
 //! looks down −z with +y up.
 
 use glam::{DMat4, DVec3, DVec4};

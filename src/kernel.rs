@@ -17,13 +17,13 @@
 
 use std::marker::PhantomData;
 
-use crate::material::ColorMaterialMode;
+use crate::gl::material::ColorMaterialMode;
+use crate::gl::scene::Specular;
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
 use crate::plan::{LightKind, Plan};
 use crate::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
 use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
-use crate::scene::Specular;
 use crate::shape::{flag, General, Shape};
 use crate::simd::float::Float;
 use crate::simd::lanes::{

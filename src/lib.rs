@@ -25,8 +25,6 @@ mod adjacency;
 mod camera;
 mod clip;
 mod kernel;
-mod light;
-mod material;
 mod mesh;
 #[cfg(test)]
 mod normal_range_tests;
@@ -43,7 +41,6 @@ mod raster;
 mod render;
 #[cfg(test)]
 mod robust_tests;
-mod scene;
 mod shade;
 mod shape;
 #[cfg(test)]
@@ -54,23 +51,22 @@ mod specialisation_tests;
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
 mod triangle;
-mod vertex_colors;
 mod visibility;
 
 pub use camera::{look_at, orthographic, perspective, Camera};
 pub use errors::error::{Error, ErrorKind};
 pub use errors::stop::Stop;
-pub use light::{Light, LIGHT_ROW_LEN};
-pub use material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
+pub use gl::light::{Light, LIGHT_ROW_LEN};
+pub use gl::material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
+pub use gl::scene::{Scene, Specular, ValidScene};
+pub use gl::vertex_colors::VertexColors;
 pub use mesh::Mesh;
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use numbers::real::Real;
 pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
 pub use render::{render, RenderOptions, Shading};
-pub use scene::{Scene, Specular, ValidScene};
 pub use shade::{describe, shade, shade_uninit};
-pub use vertex_colors::VertexColors;
 
 mod errors;
 
@@ -79,6 +75,8 @@ mod memory;
 mod simd;
 
 mod numbers;
+
+mod gl;
 
 #[cfg(feature = "python")]
 mod python;

@@ -1,6 +1,6 @@
 //! The triangle mesh a render draws, apart from the renderer so that its passes can read it.
 
-use crate::vertex_colors::VertexColors;
+use crate::gl::vertex_colors::VertexColors;
 
 /// A triangle mesh in model coordinates.
 #[derive(Clone, Copy, Debug)]

@@ -5,12 +5,12 @@
 use glam::{DMat4, DVec3};
 
 use crate::errors::stop::Stop;
-use crate::light::Light;
-use crate::material::Material;
+use crate::gl::light::Light;
+use crate::gl::material::Material;
+use crate::gl::scene::{Scene, Specular};
 use crate::numbers::real::Real;
 use crate::plan::Plan;
 use crate::prepare::{Prepared, ShadeOptions};
-use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
 use crate::simd::dispatch::Isa;
 use crate::specialisation_tests::Numbers;

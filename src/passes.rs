@@ -17,6 +17,8 @@ use rayon::prelude::*;
 use crate::adjacency::index;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
+use crate::gl::scene::{Scene, ValidScene};
+use crate::gl::vertex_colors::VertexColors;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
@@ -24,9 +26,7 @@ use crate::normals::face_normals;
 use crate::numbers::real::Real;
 use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
-use crate::scene::{Scene, ValidScene};
 use crate::shade::shade;
-use crate::vertex_colors::VertexColors;
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.

@@ -8,10 +8,10 @@
 
 use std::fmt;
 
-use crate::material::ColorMaterialMode;
+use crate::gl::material::ColorMaterialMode;
+use crate::gl::scene::Specular;
 use crate::numbers::real::Real;
 use crate::prepare::{Prepared, Source, Viewer};
-use crate::scene::Specular;
 
 /// The terms one light contributes.
 #[allow(clippy::struct_excessive_bools)] // one flag per term, like Mesa's state key

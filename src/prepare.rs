@@ -5,13 +5,13 @@
 use glam::{DMat3, DMat4, DVec3};
 
 use crate::errors::error::Error;
-use crate::light::Light;
-use crate::material::{ColorMaterial, Material};
+use crate::gl::light::Light;
+use crate::gl::material::{ColorMaterial, Material};
+use crate::gl::scene::{Scene, Specular, ValidScene};
 use crate::numbers::elementary::Full;
 use crate::numbers::matrix::scaled_inverse;
 use crate::numbers::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::power::{spot_factor, Halfway, Spot};
-use crate::scene::{Scene, Specular, ValidScene};
 use crate::simd::float::{exponent, ldexp};
 use crate::simd::lanes::{Lanes, Scalar, V3};
 

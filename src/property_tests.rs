@@ -5,10 +5,10 @@
 use proptest::prelude::*;
 
 use crate::errors::stop::Stop;
-use crate::light::Light;
-use crate::material::Material;
+use crate::gl::light::Light;
+use crate::gl::material::Material;
+use crate::gl::scene::{Scene, Specular};
 use crate::prepare::ShadeOptions;
-use crate::scene::{Scene, Specular};
 use crate::shade::shade;
 
 fn colour() -> impl Strategy<Value = [f64; 4]> {

@@ -5,10 +5,10 @@
 use glam::{DMat4, DQuat, DVec3};
 
 use crate::errors::stop::Stop;
-use crate::light::Light;
+use crate::gl::light::Light;
+use crate::gl::scene::Scene;
 use crate::numbers::real::Real;
 use crate::prepare::ShadeOptions;
-use crate::scene::Scene;
 use crate::shade::shade;
 
 /// The colours `shade` computes for one vertex.
@@ -201,10 +201,10 @@ fn spot_scene() -> Scene {
             linear_attenuation: 0.5,
             ..Light::default()
         }],
-        material: crate::material::Material {
+        material: crate::gl::material::Material {
             specular: [1.0; 4],
             shininess: 10.0,
-            ..crate::material::Material::default()
+            ..crate::gl::material::Material::default()
         },
         viewer: [0.0, 0.0, 3.0, 1.0],
         ..Scene::default()

@@ -11,7 +11,9 @@ use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::material::ColorMaterial;
+use crate::gl::material::ColorMaterial;
+use crate::gl::scene::ValidScene;
+use crate::gl::vertex_colors::VertexColors;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
@@ -20,9 +22,7 @@ use crate::numbers::real::Real;
 use crate::passes::{Frame, Pass};
 use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
-use crate::scene::ValidScene;
 use crate::shade::shade;
-use crate::vertex_colors::VertexColors;
 use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
@@ -279,8 +279,8 @@ pub fn render<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::material::Material;
-    use crate::scene::Scene;
+    use crate::gl::material::Material;
+    use crate::gl::scene::Scene;
 
     fn emission_scene() -> Scene {
         Scene {

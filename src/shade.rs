@@ -12,6 +12,7 @@ use rayon::prelude::*;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
+use crate::gl::scene::{Scene, ValidScene};
 use crate::kernel::{Block, Kernel, SideColors};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
@@ -20,13 +21,12 @@ use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::{block_lanes, BlockLanes, Real};
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::scene::{Scene, ValidScene};
 use crate::shape::{on_shape, OnShape, Shape};
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::Float;
 use crate::simd::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
 
-use crate::vertex_colors::VertexColors;
+use crate::gl::vertex_colors::VertexColors;
 
 /// Rows per parallel task: enough work to amortise rayon's scheduling for one light, few enough
 /// that a 10^4-row call still spreads over every core.
@@ -512,8 +512,8 @@ fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::light::Light;
-    use crate::material::{ColorMaterial, Material};
+    use crate::gl::light::Light;
+    use crate::gl::material::{ColorMaterial, Material};
 
     fn shade_one<T: Real>(scene: &Scene, p: [T; 3], n: [T; 3], options: &ShadeOptions) -> Vec<T> {
         let mut out = vec![T::ZERO; scene.output_count() * 4];

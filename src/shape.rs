@@ -7,10 +7,10 @@
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
 //! (`shape_tests` checks it).
 
+use crate::gl::scene::Specular;
 use crate::numbers::real::Real;
 use crate::plan::{LightKind, Plan};
 use crate::prepare::{Prepared, Viewer};
-use crate::scene::Specular;
 use crate::simd::dispatch::{Isa, LaneWork};
 
 /// The plan's flags a kernel is compiled with: `Some` is a constant, `None` is read from the

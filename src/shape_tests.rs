@@ -6,15 +6,15 @@
 use glam::DMat4;
 
 use crate::errors::stop::Stop;
+use crate::gl::light::Light;
+use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::gl::scene::{Scene, Specular};
 use crate::kernel::Kernel;
-use crate::light::Light;
-use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::numbers::display::Display;
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
 use crate::plan::Plan;
 use crate::prepare::{Prepared, ShadeOptions};
-use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run_tier, Inputs};
 use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};
 use crate::simd::dispatch::Isa;

@@ -9,15 +9,15 @@
 use glam::DMat4;
 
 use crate::errors::stop::Stop;
-use crate::light::Light;
-use crate::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::gl::light::Light;
+use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
+use crate::gl::scene::{Scene, Specular};
+use crate::gl::vertex_colors::VertexColors;
 use crate::numbers::real::Real;
 use crate::plan::Plan;
 use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::scene::{Scene, Specular};
 use crate::shade::{as_uninit, run};
 use crate::simd::dispatch::Isa;
-use crate::vertex_colors::VertexColors;
 
 const FEATURES: u32 = 14;
 

@@ -11,7 +11,7 @@ use numpy::{
 use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
-use crate::vertex_colors::VertexColors;
+use crate::gl::vertex_colors::VertexColors;
 
 /// The computation type an input array selects.
 pub enum Float {

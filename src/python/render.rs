@@ -12,7 +12,7 @@ use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use super::{faces, matrix};
 use crate::camera::Camera;
-use crate::material::ColorMaterial;
+use crate::gl::material::ColorMaterial;
 use crate::mesh::Mesh;
 use crate::numbers::real::Real;
 use crate::raster::{Cull, Viewport};

@@ -9,9 +9,9 @@ use pyo3::types::{PyDict, PyTuple};
 
 use super::arrays::shape_text;
 use super::runtime::to_pyerr;
-use crate::light::Light;
-use crate::material::Material as GlMaterial;
-use crate::scene::{Scene as GlScene, Specular, ValidScene};
+use crate::gl::light::Light;
+use crate::gl::material::Material as GlMaterial;
+use crate::gl::scene::{Scene as GlScene, Specular, ValidScene};
 
 /// The widths a parameter's last axis may have: `&[]` for a number, 3 or 4 for colours (a
 /// missing alpha is 1, every colour's default alpha).

@@ -8,7 +8,7 @@ use super::arrays::{filled, float_of, read, rows, vertex_colors, write, Float};
 use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
-use crate::material::ColorMaterial;
+use crate::gl::material::ColorMaterial;
 use crate::numbers::real::Real;
 use crate::prepare::{Accuracy, ShadeOptions};
 

@@ -4,8 +4,8 @@
 use std::ops::Deref;
 
 use crate::errors::error::Error;
-use crate::light::Light;
-use crate::material::Material;
+use crate::gl::light::Light;
+use crate::gl::material::Material;
 
 /// The specular term's vector.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
