@@ -24,15 +24,11 @@
 mod adjacency;
 mod camera;
 mod clip;
-mod kernel;
 mod mesh;
 #[cfg(test)]
 mod normal_range_tests;
 mod normals;
 mod passes;
-mod plan;
-mod power;
-mod prepare;
 #[cfg(test)]
 mod property_tests;
 #[cfg(test)]
@@ -41,8 +37,6 @@ mod raster;
 mod render;
 #[cfg(test)]
 mod robust_tests;
-mod shade;
-mod shape;
 #[cfg(test)]
 mod shape_tests;
 #[cfg(test)]
@@ -60,13 +54,13 @@ pub use gl::light::{Light, LIGHT_ROW_LEN};
 pub use gl::material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
 pub use gl::scene::{Scene, Specular, ValidScene};
 pub use gl::vertex_colors::VertexColors;
+pub use lighting::prepare::{Accuracy, ShadeOptions};
+pub use lighting::shade::{describe, shade, shade_uninit};
 pub use mesh::Mesh;
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use numbers::real::Real;
-pub use prepare::{Accuracy, ShadeOptions};
 pub use raster::{Cull, Viewport};
 pub use render::{render, RenderOptions, Shading};
-pub use shade::{describe, shade, shade_uninit};
 
 mod errors;
 
@@ -77,6 +71,8 @@ mod simd;
 mod numbers;
 
 mod gl;
+
+mod lighting;
 
 #[cfg(feature = "python")]
 mod python;

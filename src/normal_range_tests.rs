@@ -8,10 +8,10 @@ use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::material::Material;
 use crate::gl::scene::{Scene, Specular};
+use crate::lighting::plan::Plan;
+use crate::lighting::prepare::{Prepared, ShadeOptions};
+use crate::lighting::shade::{as_uninit, run};
 use crate::numbers::real::Real;
-use crate::plan::Plan;
-use crate::prepare::{Prepared, ShadeOptions};
-use crate::shade::{as_uninit, run};
 use crate::simd::dispatch::Isa;
 use crate::specialisation_tests::Numbers;
 

@@ -1,4 +1,4 @@
-//! Lighting the visible pixels, through the one lighting equation [`crate::shade::shade`]:
+//! Lighting the visible pixels, through the one lighting equation [`crate::lighting::shade::shade`]:
 //!
 //! - **Gouraud**: the vertices are lit, and the colours interpolated (GL's smooth shading).
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
@@ -19,14 +19,14 @@ use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene, ValidScene};
 use crate::gl::vertex_colors::VertexColors;
+use crate::lighting::prepare::ShadeOptions;
+use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
 use crate::normals::face_normals;
 use crate::numbers::real::Real;
-use crate::prepare::ShadeOptions;
 use crate::raster::{Triangle, Viewport};
-use crate::shade::shade;
 use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.

@@ -7,9 +7,9 @@ use glam::{DMat4, DQuat, DVec3};
 use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::scene::Scene;
+use crate::lighting::prepare::ShadeOptions;
+use crate::lighting::shade::shade;
 use crate::numbers::real::Real;
-use crate::prepare::ShadeOptions;
-use crate::shade::shade;
 
 /// The colours `shade` computes for one vertex.
 fn shade_one<T: Real>(

@@ -14,15 +14,15 @@ use crate::errors::stop::Stop;
 use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
+use crate::lighting::prepare::ShadeOptions;
+use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
 use crate::normals::{check_faces, vertex_normals, Weighting};
 use crate::numbers::real::Real;
 use crate::passes::{Frame, Pass};
-use crate::prepare::ShadeOptions;
 use crate::raster::{Cull, Triangle, Viewport};
-use crate::shade::shade;
 use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most

@@ -1,4 +1,4 @@
-//! The kernels compiled for a shape of scene ([`crate::shape`]) against the general kernel, bit
+//! The kernels compiled for a shape of scene ([`crate::lighting::shape`]) against the general kernel, bit
 //! for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2, AVX-512),
 //! both tiers and both types; the baseline choosing the general kernel; and
 //! [`fits`] refusing every feature a shape fixes otherwise.
@@ -9,14 +9,16 @@ use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
-use crate::kernel::Kernel;
+use crate::lighting::kernel::Kernel;
+use crate::lighting::plan::Plan;
+use crate::lighting::prepare::{Prepared, ShadeOptions};
+use crate::lighting::shade::{as_uninit, run_tier, Inputs};
+use crate::lighting::shape::{
+    fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape,
+};
 use crate::numbers::display::Display;
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
-use crate::plan::Plan;
-use crate::prepare::{Prepared, ShadeOptions};
-use crate::shade::{as_uninit, run_tier, Inputs};
-use crate::shape::{fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape};
 use crate::simd::dispatch::Isa;
 use crate::specialisation_tests::vertices;
 

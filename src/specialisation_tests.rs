@@ -13,10 +13,10 @@ use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
 use crate::gl::vertex_colors::VertexColors;
+use crate::lighting::plan::Plan;
+use crate::lighting::prepare::{Accuracy, Prepared, ShadeOptions};
+use crate::lighting::shade::{as_uninit, run};
 use crate::numbers::real::Real;
-use crate::plan::Plan;
-use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::shade::{as_uninit, run};
 use crate::simd::dispatch::Isa;
 
 const FEATURES: u32 = 14;

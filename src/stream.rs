@@ -6,9 +6,9 @@ use std::mem::MaybeUninit;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::kernel::{Block, SideColors};
+use crate::lighting::kernel::{Block, SideColors};
+use crate::lighting::shade::{run_tier, BlockShader, Inputs};
 use crate::numbers::real::Real;
-use crate::shade::{run_tier, BlockShader, Inputs};
 use crate::simd::dispatch::Isa;
 use crate::simd::lanes::Lanes;
 
@@ -40,7 +40,7 @@ impl<T: Real> BlockShader<T> for Stream {
 }
 
 /// Writes the streaming floor of `normals` (and `positions` when `read_positions`) into `out`
-/// (n RGBA rows), with the tasks and instruction set of [`crate::shade::shade`].
+/// (n RGBA rows), with the tasks and instruction set of [`crate::lighting::shade::shade`].
 ///
 /// # Errors
 /// A value error for mismatched lengths, a memory error for the task list, or
@@ -75,7 +75,7 @@ pub fn stream<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::shade::as_uninit;
+    use crate::lighting::shade::as_uninit;
 
     #[test]
     fn the_stream_copies_every_value_it_reads() {

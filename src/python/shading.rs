@@ -9,8 +9,8 @@ use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use crate::gl::material::ColorMaterial;
+use crate::lighting::prepare::{Accuracy, ShadeOptions};
 use crate::numbers::real::Real;
-use crate::prepare::{Accuracy, ShadeOptions};
 
 /// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
 /// of work: below it, the helper thread that watches for signals would cost more than it saves).
@@ -53,13 +53,13 @@ fn shade_typed<'py, T: Element + Real>(
         let mut rw = write::<T>(out, &shape, &inputs)?;
         let dst = rw.as_slice_mut()?;
         run(py, long, |stop| {
-            crate::shade::shade(scene, p, n, vertex_colors, options, dst, stop)
+            crate::lighting::shade::shade(scene, p, n, vertex_colors, options, dst, stop)
         })?;
         return Ok(out.clone().into_any());
     }
     let array = filled::<T>(py, &shape, |dst| {
         run(py, long, |stop| {
-            crate::shade::shade_uninit(scene, p, n, vertex_colors, options, dst, stop)
+            crate::lighting::shade::shade_uninit(scene, p, n, vertex_colors, options, dst, stop)
         })
     })?;
     Ok(array.into_any())
@@ -158,8 +158,8 @@ pub fn describe(
     )?;
     let scene = &scene.get().state;
     match dtype {
-        "float32" => crate::shade::describe::<f32>(scene, &options),
-        "float64" => crate::shade::describe::<f64>(scene, &options),
+        "float32" => crate::lighting::shade::describe::<f32>(scene, &options),
+        "float64" => crate::lighting::shade::describe::<f64>(scene, &options),
         _ => {
             return Err(PyValueError::new_err(format!(
                 "dtype must be 'float32' or 'float64', got '{dtype}'"

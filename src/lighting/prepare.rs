@@ -8,10 +8,10 @@ use crate::errors::error::Error;
 use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, Material};
 use crate::gl::scene::{Scene, Specular, ValidScene};
+use crate::lighting::power::{spot_factor, Halfway, Spot};
 use crate::numbers::elementary::Full;
 use crate::numbers::matrix::scaled_inverse;
 use crate::numbers::real::{normalize_and_length, normalize_or_zero, Real};
-use crate::power::{spot_factor, Halfway, Spot};
 use crate::simd::float::{exponent, ldexp};
 use crate::simd::lanes::{Lanes, Scalar, V3};
 

@@ -19,12 +19,12 @@ use std::marker::PhantomData;
 
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
+use crate::lighting::plan::{LightKind, Plan};
+use crate::lighting::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
+use crate::lighting::prepare::{Prepared, PreparedLight, Source, Viewer};
+use crate::lighting::shape::{flag, General, Shape};
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
-use crate::plan::{LightKind, Plan};
-use crate::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
-use crate::prepare::{Prepared, PreparedLight, Source, Viewer};
-use crate::shape::{flag, General, Shape};
 use crate::simd::float::Float;
 use crate::simd::lanes::{
     normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
@@ -245,7 +245,7 @@ fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask) -> [V; 4] {
 
 /// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
 /// elementary functions of tier `F`, compiled for scenes of shape `S` (whose flags the plan
-/// must have: see [`crate::shape::fits`]).
+/// must have: see [`crate::lighting::shape::fits`]).
 pub struct Kernel<'a, T: Real, F: Tier = Full, S: Shape = General> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,

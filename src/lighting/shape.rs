@@ -1,5 +1,5 @@
-//! Kernels compiled for one shape of scene: the same kernel ([`crate::kernel`]) with some of
-//! the plan's flags fixed when it is compiled, so the compiler drops the terms the shape cannot
+//! Kernels compiled for one shape of scene: the same kernel ([`crate::lighting::kernel`]) with some
+//! of the plan's flags fixed when it is compiled, so the compiler drops the terms the shape cannot
 //! have and the branches around the others, and more of a block's values stay in registers.
 //!
 //! A flag the shape leaves open (`None`) is read from the plan once per block, as in the
@@ -8,9 +8,9 @@
 //! (`shape_tests` checks it).
 
 use crate::gl::scene::Specular;
+use crate::lighting::plan::{LightKind, Plan};
+use crate::lighting::prepare::{Prepared, Viewer};
 use crate::numbers::real::Real;
-use crate::plan::{LightKind, Plan};
-use crate::prepare::{Prepared, Viewer};
 use crate::simd::dispatch::{Isa, LaneWork};
 
 /// The plan's flags a kernel is compiled with: `Some` is a constant, `None` is read from the

@@ -1,9 +1,9 @@
 //! `shade`: the lighting equation over arrays of vertices, in parallel.
 //!
 //! The vertices are split into tasks of [`ROWS_PER_TASK`] rows spread over rayon's threads; each
-//! task runs the kernel ([`crate::kernel`]) block by block with the widest instruction set the
-//! CPU has ([`crate::simd::dispatch`]). Every row is computed independently of every other, so the
-//! result does not depend on the number of threads or the instruction set.
+//! task runs the kernel ([`crate::lighting::kernel`]) block by block with the widest instruction
+//! set the CPU has ([`crate::simd::dispatch`]). Every row is computed independently of every other,
+//! so the result does not depend on the number of threads or the instruction set.
 
 use std::marker::PhantomData;
 use std::mem::MaybeUninit;
@@ -13,15 +13,15 @@ use rayon::prelude::*;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene, ValidScene};
-use crate::kernel::{Block, Kernel, SideColors};
+use crate::lighting::kernel::{Block, Kernel, SideColors};
+use crate::lighting::plan::Plan;
+use crate::lighting::prepare::{Accuracy, Prepared, ShadeOptions};
+use crate::lighting::shape::{on_shape, OnShape, Shape};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
 use crate::numbers::display::Display;
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::{block_lanes, BlockLanes, Real};
-use crate::plan::Plan;
-use crate::prepare::{Accuracy, Prepared, ShadeOptions};
-use crate::shape::{on_shape, OnShape, Shape};
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::Float;
 use crate::simd::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
@@ -254,7 +254,7 @@ fn check_arrays<T: Real>(
 ///
 /// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
 /// [`Accuracy::Exact`] in `f64` whatever `T` is, [`Accuracy::Display`] in `T` with the cheaper
-/// elementary functions of [`crate::numbers::display`].
+/// elementary functions of `numbers::display`.
 ///
 /// `stop` is polled before every task of `ROWS_PER_TASK` (8192) rows; once it is requested the
 /// remaining tasks are skipped and `out` is left partly written.

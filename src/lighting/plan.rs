@@ -10,8 +10,8 @@ use std::fmt;
 
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
+use crate::lighting::prepare::{Prepared, Source, Viewer};
 use crate::numbers::real::Real;
-use crate::prepare::{Prepared, Source, Viewer};
 
 /// The terms one light contributes.
 #[allow(clippy::struct_excessive_bools)] // one flag per term, like Mesa's state key
