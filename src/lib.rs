@@ -21,7 +21,6 @@
 //! `visibility`; `plan`, `normals`, `camera`; `kernel` (the equation over lanes); `shade`,
 //! `mesh`; `passes`; `render`.
 
-mod adjacency;
 mod camera;
 mod clip;
 mod mesh;
@@ -44,7 +43,6 @@ mod specialisation_tests;
 // The streaming floor of `bench shade`, called from Python only.
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
-mod triangle;
 mod visibility;
 
 pub use camera::{look_at, orthographic, perspective, Camera};

@@ -7,16 +7,23 @@
 //! All geometry runs in `f64`, also for `f32` vertices (widening is exact), as trimesh computes;
 //! only the degeneracy and cancellation thresholds depend on the dtype, and results are rounded
 //! to it once, at the end.
+//!
+//! The normals layer: [`adjacency`] (the vertex-to-face gather, which the renderer reuses) and
+//! [`triangle`] (one triangle's geometry) below this module's entry points. Uses
+//! [`crate::numbers`], [`crate::memory`] and [`crate::errors`].
+
+pub mod adjacency;
+pub mod triangle;
 
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::adjacency::{index, Adjacency};
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::memory::pages::Zeroed;
+use crate::normals::adjacency::{index, Adjacency};
+use crate::normals::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 use crate::numbers::real::{normalize_and_length, Real};
-use crate::triangle::{corner_weights, cross, face_normal, normal_and_cosines};
 
 /// Rows per parallel task for the per-face and per-vertex loops.
 const ROWS_PER_TASK: usize = 4096;
@@ -437,7 +444,7 @@ mod tests {
             &Stop::new(),
         )
         .unwrap_err();
-        assert_eq!(err.kind, crate::ErrorKind::Index);
+        assert_eq!(err.kind, crate::errors::error::ErrorKind::Index);
         assert!(
             err.message.contains("face 1 refers to vertex 3")
                 && err.message.contains("only 3 vertices"),

@@ -14,7 +14,6 @@
 use glam::DVec3;
 use rayon::prelude::*;
 
-use crate::adjacency::index;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene, ValidScene};
@@ -24,6 +23,7 @@ use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
+use crate::normals::adjacency::index;
 use crate::normals::face_normals;
 use crate::numbers::real::Real;
 use crate::raster::{Triangle, Viewport};

@@ -6,7 +6,6 @@
 use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
-use crate::adjacency::index;
 use crate::camera::{check_affine, Camera};
 use crate::clip::clip_triangle;
 use crate::errors::error::Error;
@@ -19,6 +18,7 @@ use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::mesh::Mesh;
+use crate::normals::adjacency::index;
 use crate::normals::{check_faces, vertex_normals, Weighting};
 use crate::numbers::real::Real;
 use crate::passes::{Frame, Pass};
