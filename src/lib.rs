@@ -21,18 +21,13 @@
 //! `visibility`; `plan`, `normals`, `camera`; `kernel` (the equation over lanes); `shade`,
 //! `mesh`; `passes`; `render`.
 
-mod camera;
-mod clip;
-mod mesh;
 #[cfg(test)]
 mod normal_range_tests;
 mod normals;
-mod passes;
 #[cfg(test)]
 mod property_tests;
 #[cfg(test)]
 mod range_tests;
-mod raster;
 mod render;
 #[cfg(test)]
 mod robust_tests;
@@ -43,9 +38,7 @@ mod specialisation_tests;
 // The streaming floor of `bench shade`, called from Python only.
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 mod stream;
-mod visibility;
 
-pub use camera::{look_at, orthographic, perspective, Camera};
 pub use errors::error::{Error, ErrorKind};
 pub use errors::stop::Stop;
 pub use gl::light::{Light, LIGHT_ROW_LEN};
@@ -54,10 +47,11 @@ pub use gl::scene::{Scene, Specular, ValidScene};
 pub use gl::vertex_colors::VertexColors;
 pub use lighting::prepare::{Accuracy, ShadeOptions};
 pub use lighting::shade::{describe, shade, shade_uninit};
-pub use mesh::Mesh;
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use numbers::real::Real;
-pub use raster::{Cull, Viewport};
+pub use render::camera::{look_at, orthographic, perspective, Camera};
+pub use render::mesh::Mesh;
+pub use render::raster::{Cull, Viewport};
 pub use render::{render, RenderOptions, Shading};
 
 mod errors;

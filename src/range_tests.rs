@@ -327,21 +327,21 @@ fn huge_parameters_light_finitely_f64() {
 fn draw<T: Real>(
     vertices: &[[T; 3]],
     scene: &Scene,
-    camera: &crate::camera::Camera,
+    camera: &crate::render::camera::Camera,
     shading: crate::render::Shading,
     (width, height): (usize, usize),
 ) -> (Vec<f64>, Vec<f64>) {
     let faces: Vec<[i64; 3]> = (0..i64::try_from(vertices.len() / 3).unwrap())
         .map(|f| [3 * f, 3 * f + 1, 3 * f + 2])
         .collect();
-    let mesh = crate::mesh::Mesh {
+    let mesh = crate::render::mesh::Mesh {
         vertices,
         faces: &faces,
         normals: None,
         colors: None,
     };
     let options = crate::render::RenderOptions {
-        viewport: crate::raster::Viewport { width, height },
+        viewport: crate::render::raster::Viewport { width, height },
         shading,
         ..crate::render::RenderOptions::default()
     };
@@ -373,7 +373,7 @@ fn scaled<T: Real>(corners: &[[f64; 3]], scale: f64) -> Vec<[T; 3]> {
 fn huge_triangles_rasterise_as_small_ones<T: Real>(ks: std::ops::RangeInclusive<i32>, tol: f64) {
     use crate::render::Shading;
     let size = (17, 13);
-    let ortho = crate::camera::Camera::default();
+    let ortho = crate::render::camera::Camera::default();
     // Enclosing the view; and with edges y = x/2 and x = 0.3·y... through it (lines through
     // the origin, so a uniform scale keeps them where they are on screen).
     let enclosing = [[-3.0, -3.0, 0.0], [3.0, -3.0, 0.0], [0.0, 3.0, 0.0]];
@@ -413,7 +413,7 @@ fn huge_triangles_rasterise_as_small_ones<T: Real>(ks: std::ops::RangeInclusive<
                 }
                 // A projection with w = s: the clip coordinates are the small triangle's
                 // times s, so it is the same triangle on screen, at the same depth.
-                let homogeneous = crate::camera::Camera {
+                let homogeneous = crate::render::camera::Camera {
                     projection: DMat4::from_diagonal(glam::DVec4::new(1.0, 1.0, 1.0, s)),
                     ..ortho
                 };
@@ -452,7 +452,7 @@ fn huge_triangles_under_point_lights_stay_finite<T: Real>(ks: &[i32]) {
     let mut scene = spot_scene();
     scene.lights[0].quadratic_attenuation = 1.0;
     let enclosing = [[-3.0, -3.0, 0.0], [3.0, -3.0, 0.0], [0.0, 3.0, 0.0]];
-    let ortho = crate::camera::Camera::default();
+    let ortho = crate::render::camera::Camera::default();
     for &k in ks {
         for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
             let (image, _) = draw(

@@ -1,13 +1,23 @@
 //! Rendering a triangle mesh with flat, Gouraud or Phong shading: GL 2.1's pipeline (§2.11–3.5)
 //! around the one lighting equation. Vertices go to clip coordinates, faces are clipped
-//! ([`crate::clip`]) and set up ([`crate::raster`]), the nearest triangle is found at every
-//! pixel ([`crate::visibility`]), and the visible pixels are lit ([`crate::passes`]).
+//! ([`clip`]) and set up ([`raster`]), the nearest triangle is found at every pixel
+//! ([`visibility`]), and the visible pixels are lit ([`passes`]).
+//!
+//! The render layer, top of the core: besides those four, [`camera`] (view and projection)
+//! and [`mesh`] (what is drawn). Uses every layer below it: [`crate::normals`],
+//! [`crate::lighting`], [`crate::gl`], [`crate::numbers`], [`crate::memory`] and
+//! [`crate::errors`].
+
+pub mod camera;
+pub mod clip;
+pub mod mesh;
+pub mod passes;
+pub mod raster;
+pub mod visibility;
 
 use glam::{DMat4, DVec4};
 use rayon::prelude::*;
 
-use crate::camera::{check_affine, Camera};
-use crate::clip::clip_triangle;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::material::ColorMaterial;
@@ -17,13 +27,15 @@ use crate::lighting::prepare::ShadeOptions;
 use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
-use crate::mesh::Mesh;
 use crate::normals::adjacency::index;
 use crate::normals::{check_faces, vertex_normals, Weighting};
 use crate::numbers::real::Real;
-use crate::passes::{Frame, Pass};
-use crate::raster::{Cull, Triangle, Viewport};
-use crate::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
+use crate::render::camera::{check_affine, Camera};
+use crate::render::clip::clip_triangle;
+use crate::render::mesh::Mesh;
+use crate::render::passes::{Frame, Pass};
+use crate::render::raster::{Cull, Triangle, Viewport};
+use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
 /// seven of a face.

@@ -19,7 +19,8 @@ pub fn look_at(
     target: [f64; 3],
     up: [f64; 3],
 ) -> PyResult<Bound<'_, PyAny>> {
-    let m = crate::camera::look_at(eye.into(), target.into(), up.into()).map_err(to_pyerr)?;
+    let m =
+        crate::render::camera::look_at(eye.into(), target.into(), up.into()).map_err(to_pyerr)?;
     to_numpy(py, m)
 }
 
@@ -32,7 +33,7 @@ pub fn perspective(
     near: f64,
     far: f64,
 ) -> PyResult<Bound<'_, PyAny>> {
-    let m = crate::camera::perspective(fovy, aspect, near, far).map_err(to_pyerr)?;
+    let m = crate::render::camera::perspective(fovy, aspect, near, far).map_err(to_pyerr)?;
     to_numpy(py, m)
 }
 
@@ -47,6 +48,7 @@ pub fn orthographic(
     near: f64,
     far: f64,
 ) -> PyResult<Bound<'_, PyAny>> {
-    let m = crate::camera::orthographic(left, right, bottom, top, near, far).map_err(to_pyerr)?;
+    let m = crate::render::camera::orthographic(left, right, bottom, top, near, far)
+        .map_err(to_pyerr)?;
     to_numpy(py, m)
 }

@@ -59,7 +59,7 @@ mod _glshade {
     #[pymodule_init]
     fn init(m: &Bound<'_, PyModule>) -> PyResult<()> {
         m.add("__version__", env!("CARGO_PKG_VERSION"))?;
-        m.add("MAX_SIZE", crate::raster::MAX_SIZE)?;
+        m.add("MAX_SIZE", crate::render::raster::MAX_SIZE)?;
         Ok(())
     }
 }

@@ -11,11 +11,11 @@ use super::arrays::{float_of, read, rows, vertex_colors, zeros, Float};
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use super::{faces, matrix};
-use crate::camera::Camera;
 use crate::gl::material::ColorMaterial;
-use crate::mesh::Mesh;
 use crate::numbers::real::Real;
-use crate::raster::{Cull, Viewport};
+use crate::render::camera::Camera;
+use crate::render::mesh::Mesh;
+use crate::render::raster::{Cull, Viewport};
 use crate::render::{RenderOptions, Shading};
 
 fn render_typed<'py, T: Element + Real>(

@@ -15,7 +15,8 @@
 
 use glam::{DVec2, DVec3, DVec4};
 
-use crate::clip::ClipVertex;
+use crate::errors::error::Error;
+use crate::render::clip::ClipVertex;
 
 /// Sub-pixel precision of the snapped vertices, in bits (llvmpipe's `FIXED_ORDER`).
 pub const SUBPIXEL_BITS: u32 = 8;
@@ -65,13 +66,13 @@ impl Cull {
     ///
     /// # Errors
     /// A value error naming `cull` for any other string.
-    pub fn parse(name: &str) -> Result<Self, crate::Error> {
+    pub fn parse(name: &str) -> Result<Self, Error> {
         match name {
             "none" => Ok(Self::None),
             "back" => Ok(Self::Back),
             "front" => Ok(Self::Front),
             "front_and_back" => Ok(Self::FrontAndBack),
-            _ => Err(crate::Error::value(format!(
+            _ => Err(Error::value(format!(
                 "cull must be None, 'back', 'front' or 'front_and_back', got '{name}'"
             ))),
         }
@@ -104,10 +105,10 @@ impl Viewport {
     ///
     /// # Errors
     /// A value error naming `width` or `height`.
-    pub fn validate(self) -> Result<(), crate::Error> {
+    pub fn validate(self) -> Result<(), Error> {
         for (name, size) in [("width", self.width), ("height", self.height)] {
             if size == 0 || size > MAX_SIZE {
-                return Err(crate::Error::value(format!(
+                return Err(Error::value(format!(
                     "{name} must be in [1, {MAX_SIZE}], got {size}"
                 )));
             }

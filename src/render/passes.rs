@@ -1,4 +1,5 @@
-//! Lighting the visible pixels, through the one lighting equation [`crate::lighting::shade::shade`]:
+//! Lighting the visible pixels, through the one lighting equation
+//! [`crate::lighting::shade::shade`]:
 //!
 //! - **Gouraud**: the vertices are lit, and the colours interpolated (GL's smooth shading).
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
@@ -22,12 +23,12 @@ use crate::lighting::prepare::ShadeOptions;
 use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
-use crate::mesh::Mesh;
 use crate::normals::adjacency::index;
 use crate::normals::face_normals;
 use crate::numbers::real::Real;
-use crate::raster::{Triangle, Viewport};
-use crate::visibility::{window_row, Triangles, NO_TRIANGLE};
+use crate::render::mesh::Mesh;
+use crate::render::raster::{Triangle, Viewport};
+use crate::render::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.
 const FACES_PER_TASK: usize = 4096;

@@ -11,7 +11,7 @@ use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::memory::alloc::{try_collect, try_filled};
 use crate::numbers::real::Real;
-use crate::raster::{Triangle, Viewport};
+use crate::render::raster::{Triangle, Viewport};
 
 /// The triangle id of a pixel no triangle covers.
 pub const NO_TRIANGLE: u32 = u32::MAX;
@@ -162,8 +162,8 @@ pub fn visibility<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::clip::ClipVertex;
-    use crate::raster::Cull;
+    use crate::render::clip::ClipVertex;
+    use crate::render::raster::Cull;
     use glam::{DVec3, DVec4};
 
     /// A triangle over the whole 40 x 40 viewport at NDC depth `z`, CCW.
