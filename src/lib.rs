@@ -35,9 +35,6 @@ mod robust_tests;
 mod shape_tests;
 #[cfg(test)]
 mod specialisation_tests;
-// The streaming floor of `bench shade`, called from Python only.
-#[cfg_attr(not(feature = "python"), allow(dead_code))]
-mod stream;
 
 pub use errors::error::{Error, ErrorKind};
 pub use errors::stop::Stop;
@@ -65,6 +62,10 @@ mod numbers;
 mod gl;
 
 mod lighting;
+
+#[cfg(feature = "lab")]
+#[cfg_attr(not(feature = "python"), allow(dead_code))] // the binding is its only caller
+mod lab;
 
 #[cfg(feature = "python")]
 mod python;

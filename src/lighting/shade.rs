@@ -63,7 +63,7 @@ pub(crate) struct Inputs<'a, T> {
 }
 
 /// What a task runs on each block: the lighting equation ([`Kernel`]), or the streaming floor
-/// (`crate::stream`), which reads and writes the same and computes nothing.
+/// (`crate::lab::stream`), which reads and writes the same and computes nothing.
 pub(crate) trait BlockShader<T: Real>: Sync {
     /// Positions are read.
     fn reads_positions(&self) -> bool;

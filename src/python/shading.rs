@@ -183,7 +183,7 @@ fn stream_typed<'py, T: Element + Real>(
     );
     let array = filled::<T>(py, &[n.len(), 4], |dst| {
         run(py, false, |stop| {
-            crate::stream::stream(p, n, read_positions, dst, stop)
+            crate::lab::stream::stream(p, n, read_positions, dst, stop)
         })
     })?;
     Ok(array.into_any())
