@@ -13,28 +13,49 @@
 //! [`look_at`], [`perspective`] and [`orthographic`], and the types of their arguments.
 //! [`Real`] is implemented for `f32` and `f64` only (its supertraits are internal).
 //!
-//! Layering, bottom up (each group, between semicolons, uses only the groups before it):
-//! `error`, `float` (the scalar trait); `alloc`, `stop`, `light`, `material`, `clip`, `lanes`
-//! (the `Lanes` trait and the register sets); `pages`, `scene`, `raster`, `elementary`
-//! (`exp`/`ln` over lanes); `adjacency`, `real` (a float tied to its lanes), `power` (the spot
-//! and specular powers); `prepare`, `dispatch` (the run-time instruction set), `triangle`,
-//! `visibility`; `plan`, `normals`, `camera`; `kernel` (the equation over lanes); `shade`,
-//! `mesh`; `passes`; `render`.
+//! # Layers
+//!
+//! One folder per subsystem, top to bottom; each uses only the layers below it (a test,
+//! `tests::layers`, reads the sources and checks it):
+//!
+//! | layer | what it is |
+//! |---|---|
+//! | `python` | the binding (feature `python`): validates, releases the GIL, calls the core |
+//! | `lab` | the streaming floor of `bench shade` (feature `lab`, on with `python`) |
+//! | `render` | camera, clipping, rasterisation, visibility, the shading passes |
+//! | `normals` | face and vertex normals, the vertex-to-face adjacency |
+//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade` |
+//! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
+//! | `numbers` | `exp`/`ln` over lanes (exact and display tiers), `Real`, matrix helpers |
+//! | `simd` | `f32`/`f64` behind one trait, the lanes of each instruction set, dispatch |
+//! | `memory` | fallible allocation, zeroed scratch pages |
+//! | `errors` | the error type, stopping a call |
+
+#[cfg(feature = "python")]
+mod python;
+
+#[cfg(feature = "lab")]
+#[cfg_attr(not(feature = "python"), allow(dead_code))] // the binding is its only caller
+mod lab;
+
+mod render;
+
+mod normals;
+
+mod lighting;
+
+mod gl;
+
+mod numbers;
+
+mod simd;
+
+mod memory;
+
+mod errors;
 
 #[cfg(test)]
-mod normal_range_tests;
-mod normals;
-#[cfg(test)]
-mod property_tests;
-#[cfg(test)]
-mod range_tests;
-mod render;
-#[cfg(test)]
-mod robust_tests;
-#[cfg(test)]
-mod shape_tests;
-#[cfg(test)]
-mod specialisation_tests;
+mod tests;
 
 pub use errors::error::{Error, ErrorKind};
 pub use errors::stop::Stop;
@@ -50,22 +71,3 @@ pub use render::camera::{look_at, orthographic, perspective, Camera};
 pub use render::mesh::Mesh;
 pub use render::raster::{Cull, Viewport};
 pub use render::{render, RenderOptions, Shading};
-
-mod errors;
-
-mod memory;
-
-mod simd;
-
-mod numbers;
-
-mod gl;
-
-mod lighting;
-
-#[cfg(feature = "lab")]
-#[cfg_attr(not(feature = "python"), allow(dead_code))] // the binding is its only caller
-mod lab;
-
-#[cfg(feature = "python")]
-mod python;

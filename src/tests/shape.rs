@@ -1,7 +1,7 @@
-//! The kernels compiled for a shape of scene ([`crate::lighting::shape`]) against the general kernel, bit
-//! for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2, AVX-512),
-//! both tiers and both types; the baseline choosing the general kernel; and
-//! [`fits`] refusing every feature a shape fixes otherwise.
+//! The kernels compiled for a shape of scene ([`crate::lighting::shape`]) against the general
+//! kernel, bit for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2,
+//! AVX-512), both tiers and both types; the baseline choosing the general kernel; and [`fits`]
+//! refusing every feature a shape fixes otherwise.
 
 use glam::DMat4;
 
@@ -20,7 +20,7 @@ use crate::numbers::display::Display;
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
-use crate::specialisation_tests::vertices;
+use crate::tests::support::vertices;
 
 /// Lights of every kind the mixed shape takes: directional, attenuated point, spot, one with
 /// an ambient term (the benchmark's eight, in short).

@@ -13,7 +13,7 @@ use crate::lighting::prepare::{Prepared, ShadeOptions};
 use crate::lighting::shade::{as_uninit, run};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
-use crate::specialisation_tests::Numbers;
+use crate::tests::support::Numbers;
 
 /// The positional spot light with attenuation of the report, or a directional light.
 fn scene(spot: bool, specular: Specular, two_side: bool) -> Scene {
