@@ -1,9 +1,11 @@
-"""Shared test configuration: hypothesis profiles (HYPOTHESIS_PROFILE=ci|dev|thorough)."""
+"""Shared test configuration: hypothesis profiles (HYPOTHESIS_PROFILE=ci|dev|thorough), the
+references' availability (`unavailable`, `require`) and the seeded `rng` fixture."""
 
 import importlib
 import os
 from typing import NoReturn
 
+import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
 
@@ -27,3 +29,10 @@ def require(module: str) -> object:
     if os.environ.get("CI"):
         return importlib.import_module(module)
     return pytest.importorskip(module, reason=f"{module} is not installed (pip install '.[test]')")
+
+
+@pytest.fixture
+def rng() -> np.random.Generator:
+    """A generator of fixed seed, new for each test: a test's data does not depend on which tests
+    ran before it, or in what order."""
+    return np.random.default_rng(13)

@@ -7,17 +7,21 @@
 (1000, 4)
 """
 
-from . import glsl, presets
+from typing import TYPE_CHECKING, Any
+
+from . import glsl, meshes, presets
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
+from ._dispatch import shade
 from ._glshade import __version__
 from ._normals import face_normals, vertex_normals
 from ._render import Image, render
 from ._scene import Light, Lights, Material, Scene
-from ._shade import shade
 from ._shade_mesh import shade_mesh
-from ._tools.report import Report, report  # last: the tools use the names above
+
+if TYPE_CHECKING:
+    from .lab.report import Report, report
 
 __all__ = [
     "Camera",
@@ -33,6 +37,7 @@ __all__ = [
     "disc_light",
     "face_normals",
     "glsl",
+    "meshes",
     "presets",
     "rectangle_light",
     "render",
@@ -41,3 +46,14 @@ __all__ = [
     "shade_mesh",
     "vertex_normals",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    """`report` and `Report` from the lab, imported on first use: `import glshade` leaves the
+    lab (bench, report and demo code, matplotlib's figures) unimported."""
+    if name in ("report", "Report"):
+        # The package's one runtime import of the lab, on first use: the lab is its client.
+        from .lab import report as lab_report
+
+        return getattr(lab_report, name)
+    raise AttributeError(f"module 'glshade' has no attribute {name!r}")

@@ -1,8 +1,8 @@
-"""``python -m glshade``: the command-line tools of `glshade._tools.cli`."""
+"""``python -m glshade``: the command-line tools of `glshade.lab.cli`."""
 
 import sys
 
-from ._tools.cli import main
+from .lab.cli import main
 
 __all__ = ["main"]
 

@@ -12,8 +12,9 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._params import Float64Array, rgb, scalar, vector3
+from ._params import rgb, scalar, vector3
 from ._scene import Lights
+from ._typing import Float64Array
 
 __all__ = ["disc_light", "rectangle_light"]
 

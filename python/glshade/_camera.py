@@ -6,23 +6,13 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import matrix, number, real
+from ._intake import number, real, transform
+from ._typing import Float64Array
 
 __all__ = ["Camera"]
-
-Float64Array = NDArray[np.float64]
-
-
-def _matrix(value: ArrayLike | None, name: str) -> Float64Array:
-    """A (4, 4) float64 matrix (identity for None), finite, as a read-only copy."""
-    m = np.eye(4) if value is None else matrix(value, name).copy()
-    if not np.isfinite(m).all():
-        raise ValueError(f"{name} must be finite, got {m.tolist()}")
-    m.flags.writeable = False
-    return m
 
 
 def _point(value: ArrayLike, name: str) -> tuple[float, float, float]:
@@ -73,8 +63,8 @@ class Camera:
     _lens: tuple[Any, ...]
 
     def __init__(self, view: ArrayLike | None = None, projection: ArrayLike | None = None) -> None:
-        self._view = _matrix(view, "view")
-        self._lens = ("projection", _matrix(projection, "projection"))
+        self._view = transform(view, "view")
+        self._lens = ("projection", transform(projection, "projection"))
 
     @classmethod
     def _built(cls, view: Float64Array, lens: tuple[Any, ...]) -> Camera:
@@ -82,7 +72,7 @@ class Camera:
         near, far) or ("orthographic", height, aspect, near, far), aspect None for the image's."""
         camera = cls(view)
         if lens[0] == "projection":  # read-only again after a pickle's round trip
-            lens = ("projection", _matrix(lens[1], "projection"))
+            lens = ("projection", transform(lens[1], "projection"))
         camera._lens = lens
         camera.projection_matrix(1, 1)  # checks the parameters now rather than at the first render
         return camera

@@ -11,11 +11,11 @@ from numpy.typing import ArrayLike, NDArray
 from ._intake import array, number
 from ._records import ValueRecord
 from ._render import Image
+from ._typing import Float64Array
 
 __all__ = ["Comparison", "compare"]
 
 Alpha = Literal["straight", "premultiplied"]
-Float64Array = NDArray[np.float64]
 
 # The kinds of difference, as `Comparison.labels` numbers them.
 KINDS = (

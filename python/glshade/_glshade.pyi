@@ -52,6 +52,7 @@ class Scene:
         cls,
         lights: Lights,
         material: Material,
+        *,
         back_material: Material | None,
         global_ambient: tuple[float, float, float, float],
         viewer: tuple[float, ...],
@@ -62,12 +63,31 @@ class Scene:
     ) -> Scene: ...
     @property
     def outputs(self) -> list[str]: ...
-    def __getnewargs__(self) -> tuple[Any, ...]: ...
+    @property
+    def lights(self) -> Lights: ...
+    @property
+    def material(self) -> Material: ...
+    @property
+    def back_material(self) -> Material | None: ...
+    @property
+    def global_ambient(self) -> tuple[float, float, float, float]: ...
+    @property
+    def viewer(self) -> tuple[float, float, float, float]: ...
+    @property
+    def two_side(self) -> bool: ...
+    @property
+    def separate_specular(self) -> bool: ...
+    @property
+    def specular(self) -> str: ...
+    @property
+    def specular_gate(self) -> bool: ...
+    def __getnewargs_ex__(self) -> tuple[tuple[Lights, Material], dict[str, Any]]: ...
 
 def shade(
     positions: NDArray[np.floating[Any]],
     normals: NDArray[np.floating[Any]],
     scene: Scene,
+    *,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,
@@ -85,6 +105,7 @@ def stream(
 ) -> NDArray[np.floating[Any]]: ...
 def describe(
     scene: Scene,
+    *,
     modelview: NDArray[np.float64] | None,
     normalize: bool,
     rescale_normal: bool,
@@ -113,6 +134,7 @@ def render(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],
     scene: Scene,
+    *,
     view: NDArray[np.float64],
     projection: NDArray[np.float64],
     model: NDArray[np.float64],

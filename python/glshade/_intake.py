@@ -26,8 +26,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-FloatArray = NDArray[np.floating[Any]]
-Float64Array = NDArray[np.float64]
+from ._typing import Float64Array, FloatArray
 
 _FLOAT32 = np.dtype(np.float32)
 _FLOAT64 = np.dtype(np.float64)
@@ -153,6 +152,24 @@ def matrix(value: ArrayLike, name: str) -> Float64Array:
     if m.shape != (4, 4):
         raise ValueError(f"{name} must have shape (4, 4), got shape {m.shape}")
     return m
+
+
+def transform(value: ArrayLike | None, name: str) -> Float64Array:
+    """A (4, 4) float64 matrix (identity for None), finite, as a read-only copy."""
+    m = np.eye(4) if value is None else matrix(value, name).copy()
+    if not np.isfinite(m).all():
+        raise ValueError(f"{name} must be finite, got {m.tolist()}")
+    m.flags.writeable = False
+    return m
+
+
+def rgba(value: ArrayLike, name: str) -> tuple[float, float, float, float]:
+    """A colour of 3 or 4 components as RGBA (a missing alpha is 1)."""
+    a = real(value, name)
+    if a.shape not in ((3,), (4,)):
+        raise ValueError(f"{name} must have shape (3,) or (4,), got shape {a.shape}")
+    r, g, b, alpha = (*a.tolist(), 1.0)[:4]
+    return (r, g, b, alpha)
 
 
 def flag(value: object, name: str) -> bool:

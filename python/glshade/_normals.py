@@ -2,31 +2,15 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any
 
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import FloatArray, indices, rows
-from ._trimesh import as_mesh, is_mesh
+from ._trimesh import mesh_arrays
+from ._typing import FloatArray, Weighting
 
 __all__ = ["face_normals", "vertex_normals"]
-
-Weighting = Literal["angle", "area", "uniform"]
-
-
-def _mesh(vertices: Any, faces: ArrayLike | None) -> tuple[FloatArray, Any]:
-    """(vertices, faces), taken from a mesh object (trimesh.Trimesh or anything with `.vertices`
-    and `.faces`, or a trimesh.Scene flattened by its graph) when `faces` is None."""
-    if faces is None:
-        if not is_mesh(vertices):
-            raise TypeError(
-                "faces is required unless the first argument is a mesh with .vertices and .faces, "
-                f"got {type(vertices)!r}"
-            )
-        mesh = as_mesh(vertices)
-        vertices, faces = mesh.vertices, mesh.faces
-    return rows(vertices, "vertices"), indices(faces, "faces")
 
 
 def face_normals(vertices: Any, faces: ArrayLike | None = None) -> FloatArray:
@@ -55,7 +39,7 @@ def face_normals(vertices: Any, faces: ArrayLike | None = None) -> FloatArray:
     ValueError, TypeError
         For wrong shapes or dtypes.
     """
-    v, f = _mesh(vertices, faces)
+    v, f = mesh_arrays(vertices, faces)
     result: FloatArray = _glshade.face_normals(v, f)
     return result
 
@@ -104,6 +88,6 @@ def vertex_normals(
     """
     if not isinstance(weighting, str):
         raise TypeError(f"weighting must be 'angle', 'area' or 'uniform', got {weighting!r}")
-    v, f = _mesh(vertices, faces)
+    v, f = mesh_arrays(vertices, faces)
     result: FloatArray = _glshade.vertex_normals(v, f, weighting)
     return result

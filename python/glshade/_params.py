@@ -6,11 +6,10 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
 from ._intake import real
-
-Float64Array = NDArray[np.float64]
+from ._typing import Float64Array
 
 
 def real_array(value: ArrayLike, name: str) -> Float64Array:

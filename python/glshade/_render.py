@@ -9,17 +9,14 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._camera import Camera, _matrix
-from ._intake import FloatArray, choice, flag, integer, optional_choice
+from ._camera import Camera
+from ._intake import choice, flag, integer, optional_choice, rgba, transform
 from ._png import encode_png, write_png
 from ._render_input import render_input
-from ._scene import Scene, _rgba
-from ._shade import ColorMaterialMode
+from ._scene import Scene
+from ._typing import ColorMaterialMode, Cull, Face, FloatArray, Shading, Space
 
 __all__ = ["Image", "render"]
-
-Shading = Literal["flat", "gouraud", "phong"]
-Cull = Literal["back", "front", "front_and_back"]
 
 
 def _image_shaped(a: np.ndarray[Any, Any]) -> bool:
@@ -87,13 +84,13 @@ def render(
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
-    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    color_material_face: Face = ...,
     model: ArrayLike | None = ...,
     normalize: bool = ...,
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
-    lights_in: Literal["eye", "world"] = ...,
+    lights_in: Space = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
@@ -109,13 +106,13 @@ def render(
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
-    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    color_material_face: Face = ...,
     model: ArrayLike | None = ...,
     normalize: bool = ...,
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
-    lights_in: Literal["eye", "world"] = ...,
+    lights_in: Space = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
@@ -131,13 +128,13 @@ def render(
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
-    color_material_face: Literal["front", "back", "front_and_back"] = ...,
+    color_material_face: Face = ...,
     model: ArrayLike | None = ...,
     normalize: bool = ...,
     rescale_normal: bool = ...,
     cull: Cull | None = ...,
     background: ArrayLike = ...,
-    lights_in: Literal["eye", "world"] = ...,
+    lights_in: Space = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
@@ -152,13 +149,13 @@ def render(
     normals: ArrayLike | None = None,
     colors: ArrayLike | Literal[False] | None = None,
     color_material: ColorMaterialMode | None = None,
-    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    color_material_face: Face = "front_and_back",
     model: ArrayLike | None = None,
     normalize: bool = True,
     rescale_normal: bool = False,
     cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
-    lights_in: Literal["eye", "world"] = "eye",
+    lights_in: Space = "eye",
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -257,20 +254,20 @@ def render(
         v,
         f,
         given.scene._native,
-        lens.view,
-        lens.projection_matrix(w, h),
-        _matrix(model, "model"),
-        w,
-        h,
-        choice(shading, "shading"),
-        n,
-        c,
-        optional_choice(given.color_material, "color_material"),
-        choice(color_material_face, "color_material_face"),
-        flag(normalize, "normalize"),
-        flag(rescale_normal, "rescale_normal"),
-        "none" if cull is None else choice(cull, "cull"),
-        np.array(_rgba(background, "background")),
+        view=lens.view,
+        projection=lens.projection_matrix(w, h),
+        model=transform(model, "model"),
+        width=w,
+        height=h,
+        shading=choice(shading, "shading"),
+        normals=n,
+        colors=c,
+        color_material=optional_choice(given.color_material, "color_material"),
+        color_material_face=choice(color_material_face, "color_material_face"),
+        normalize=flag(normalize, "normalize"),
+        rescale_normal=flag(rescale_normal, "rescale_normal"),
+        cull="none" if cull is None else choice(cull, "cull"),
+        background=np.array(rgba(background, "background")),
     )
     result = image.view(Image)
     return (result, z) if depth else result

@@ -10,10 +10,11 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._camera import Camera
-from ._intake import FloatArray, array, color_values, rows
-from ._normals import _mesh, vertex_normals
+from ._intake import array, color_values, rows
+from ._normals import vertex_normals
 from ._scene import Scene
-from ._trimesh import as_mesh, is_mesh, mesh_colors
+from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors
+from ._typing import FloatArray
 
 
 @dataclass
@@ -52,7 +53,7 @@ def render_input(
     if lights_in not in ("eye", "world"):
         raise ValueError(f"lights_in must be 'eye' or 'world', got {lights_in!r}")
     mesh = as_mesh(vertices) if faces is None and is_mesh(vertices) else None
-    v, f = _mesh(vertices if mesh is None else mesh, faces)
+    v, f = mesh_arrays(vertices if mesh is None else mesh, faces)
     own = None
     if colors is None and mesh is not None:
         own = mesh_colors(mesh)

@@ -11,14 +11,13 @@ from collections.abc import Iterable
 from typing import Any, Literal
 
 import numpy as np
-from numpy.typing import ArrayLike, NDArray
+from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import choice, flag, integer, matrix, optional_choice, real
+from ._intake import choice, flag, integer, matrix, optional_choice, real, rgba
+from ._typing import Accuracy, Float64Array
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
-
-Float64Array = NDArray[np.float64]
 
 _LIGHT = _glshade.Lights.DEFAULTS
 _MATERIAL = _glshade.Material.DEFAULTS
@@ -273,15 +272,6 @@ class Material:
     __hash__ = None  # type: ignore[assignment]
 
 
-def _rgba(value: ArrayLike, name: str) -> tuple[float, float, float, float]:
-    """A colour of 3 or 4 components as RGBA (a missing alpha is 1)."""
-    a = real(value, name)
-    if a.shape not in ((3,), (4,)):
-        raise ValueError(f"{name} must have shape (3,) or (4,), got shape {a.shape}")
-    r, g, b, alpha = (*a.tolist(), 1.0)[:4]
-    return (r, g, b, alpha)
-
-
 class Scene:
     """Lights, materials and the light model (``glLightModel``) of one lit scene.
 
@@ -354,13 +344,13 @@ class Scene:
         self._native = _glshade.Scene(
             self._lights._native,
             self.material._native,
-            None if back_material is None else back_material._native,
-            _rgba(global_ambient, "global_ambient"),
-            tuple(viewer_array.tolist()),
-            flag(two_side, "two_side"),
-            flag(separate_specular, "separate_specular"),
-            choice(specular, "specular"),
-            flag(specular_gate, "specular_gate"),
+            back_material=None if back_material is None else back_material._native,
+            global_ambient=rgba(global_ambient, "global_ambient"),
+            viewer=tuple(viewer_array.tolist()),
+            two_side=flag(two_side, "two_side"),
+            separate_specular=flag(separate_specular, "separate_specular"),
+            specular=choice(specular, "specular"),
+            specular_gate=flag(specular_gate, "specular_gate"),
         )
 
     @property
@@ -368,39 +358,35 @@ class Scene:
         """All lights of the scene, as one `Lights`."""
         return self._lights
 
-    def _light_model(self) -> tuple[Any, ...]:
-        """global_ambient, viewer, two_side, separate_specular, specular, specular_gate."""
-        return tuple(self._native.__getnewargs__()[3:])
-
     @property
     def global_ambient(self) -> Float64Array:
         """(4,) float64 ``GL_LIGHT_MODEL_AMBIENT``."""
-        return _frozen(self._light_model()[0])
+        return _frozen(np.array(self._native.global_ambient))
 
     @property
     def viewer(self) -> Float64Array:
         """(4,) float64 homogeneous viewer."""
-        return _frozen(self._light_model()[1])
+        return _frozen(np.array(self._native.viewer))
 
     @property
     def two_side(self) -> bool:
         """``GL_LIGHT_MODEL_TWO_SIDE``."""
-        return bool(self._light_model()[2])
+        return self._native.two_side
 
     @property
     def separate_specular(self) -> bool:
         """``GL_SEPARATE_SPECULAR_COLOR``."""
-        return bool(self._light_model()[3])
+        return self._native.separate_specular
 
     @property
     def specular(self) -> str:
         """``"blinn"`` or ``"phong"``."""
-        return str(self._light_model()[4])
+        return self._native.specular
 
     @property
     def specular_gate(self) -> bool:
         """GL's ``f_i`` gate on the specular term."""
-        return bool(self._light_model()[5])
+        return self._native.specular_gate
 
     @property
     def outputs(self) -> tuple[str, ...]:
@@ -415,7 +401,7 @@ class Scene:
         rescale_normal: bool = False,
         color_material: str | None = None,
         color_material_face: str = "front_and_back",
-        accuracy: Literal["fast", "exact", "display"] = "fast",
+        accuracy: Accuracy = "fast",
         strict: bool = False,
     ) -> str:
         """What `shade` computes for this scene, in one line.
@@ -438,14 +424,14 @@ class Scene:
             raise TypeError(f"dtype must be float32 or float64, got {name}")
         return _glshade.describe(
             self._native,
-            None if modelview is None else matrix(modelview, "modelview"),
-            flag(normalize, "normalize"),
-            flag(rescale_normal, "rescale_normal"),
-            optional_choice(color_material, "color_material"),
-            choice(color_material_face, "color_material_face"),
-            choice(accuracy, "accuracy"),
-            flag(strict, "strict"),
-            "float64" if name == "float64" else "float32",
+            modelview=None if modelview is None else matrix(modelview, "modelview"),
+            normalize=flag(normalize, "normalize"),
+            rescale_normal=flag(rescale_normal, "rescale_normal"),
+            color_material=optional_choice(color_material, "color_material"),
+            color_material_face=choice(color_material_face, "color_material_face"),
+            accuracy=choice(accuracy, "accuracy"),
+            strict=flag(strict, "strict"),
+            dtype="float64" if name == "float64" else "float32",
         )
 
     def in_eye_space(self, view: ArrayLike) -> Scene:

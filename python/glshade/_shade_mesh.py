@@ -2,15 +2,16 @@
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._intake import FloatArray
-from ._normals import Weighting, _mesh, face_normals, vertex_normals
+from ._dispatch import shade
+from ._normals import face_normals, vertex_normals
 from ._scene import Scene
-from ._shade import shade
+from ._trimesh import mesh_arrays
+from ._typing import FloatArray, Per, Weighting
 
 __all__ = ["shade_mesh"]
 
@@ -20,7 +21,7 @@ def shade_mesh(
     faces: ArrayLike | None = None,
     *,
     scene: Scene,
-    per: Literal["vertex", "face"] = "vertex",
+    per: Per = "vertex",
     weighting: Weighting = "angle",
     **shade_kwargs: Any,
 ) -> FloatArray:
@@ -71,7 +72,7 @@ def shade_mesh(
         raise ValueError(f"per must be 'vertex' or 'face', got {per!r}")
     if weighting not in ("angle", "area", "uniform"):
         raise ValueError(f"weighting must be 'angle', 'area' or 'uniform', got {weighting!r}")
-    v, f = _mesh(vertices, faces)
+    v, f = mesh_arrays(vertices, faces)
     if per == "vertex":
         return shade(v, vertex_normals(v, f, weighting), scene, **shade_kwargs)
     normals = face_normals(v, f)  # checks every index before the gather below

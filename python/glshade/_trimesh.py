@@ -1,13 +1,17 @@
 """Meshes as they come: a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``), a
-``trimesh.Scene`` flattened into one mesh, and the colours a mesh carries. trimesh itself is
-never imported: its objects are read through their attributes."""
+``trimesh.Scene`` flattened into one mesh, the colours a mesh carries, and the (vertices, faces)
+arrays of a mesh or of arrays given as they are. trimesh itself is never imported: its objects
+are read through their attributes."""
 
 from __future__ import annotations
 
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
-from numpy.typing import NDArray
+from numpy.typing import ArrayLike, NDArray
+
+from ._intake import indices, rows
+from ._typing import FloatArray, Per
 
 
 def is_mesh(obj: Any) -> bool:
@@ -36,7 +40,21 @@ def as_mesh(obj: Any) -> Any:
     return mesh
 
 
-def mesh_colors(mesh: Any) -> tuple[NDArray[Any], Literal["vertex", "face"]] | None:
+def mesh_arrays(vertices: Any, faces: ArrayLike | None) -> tuple[FloatArray, Any]:
+    """(vertices, faces), taken from a mesh object (trimesh.Trimesh or anything with `.vertices`
+    and `.faces`, or a trimesh.Scene flattened by its graph) when `faces` is None."""
+    if faces is None:
+        if not is_mesh(vertices):
+            raise TypeError(
+                "faces is required unless the first argument is a mesh with .vertices and .faces, "
+                f"got {type(vertices)!r}"
+            )
+        mesh = as_mesh(vertices)
+        vertices, faces = mesh.vertices, mesh.faces
+    return rows(vertices, "vertices"), indices(faces, "faces")
+
+
+def mesh_colors(mesh: Any) -> tuple[NDArray[Any], Per] | None:
     """The colours `mesh` defines (``mesh.visual`` of kind "vertex" or "face", uint8 RGBA as
     trimesh stores them), or None for a mesh without colours of its own (trimesh's default
     grey, textures, or no ``visual``)."""

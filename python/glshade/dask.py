@@ -42,9 +42,10 @@ except ImportError as error:  # pragma: no cover - exercised without dask instal
     ) from error
 
 from ._intake import integer
-from ._normals import Weighting, vertex_normals
+from ._normals import vertex_normals
 from ._scene import Scene
-from ._shade import shade as _shade
+from ._shade import shade_arrays
+from ._typing import Weighting
 
 __all__ = ["from_npy", "shade", "shade_mesh", "to_npy"]
 
@@ -103,7 +104,7 @@ def shade(
     # One empty call checks every option now and gives the result's dtype and leading axis.
     empty = [np.zeros((0, x.shape[-1]), x.dtype) for x in inputs]
     empty_colors = empty[2] if colors is not None else None
-    probe = _shade(empty[0], empty[1], scene, colors=empty_colors, **shade_kwargs)
+    probe = shade_arrays(empty[0], empty[1], scene, colors=empty_colors, **shade_kwargs)
     outputs = probe.shape[0] if probe.ndim == 3 else None
     axes = string.ascii_lowercase[: len(leading)]
     arguments: list[Any] = []
@@ -270,7 +271,7 @@ def _shade_chunk(*arguments: Any) -> NDArray[Any]:
     """One task: `glshade.shade` over one chunk of rows."""
     *arrays, (scene, shade_kwargs) = arguments
     colors = arrays[2] if len(arrays) == 3 else None
-    result: NDArray[Any] = _shade(arrays[0], arrays[1], scene, colors=colors, **shade_kwargs)
+    result: NDArray[Any] = shade_arrays(arrays[0], arrays[1], scene, colors=colors, **shade_kwargs)
     return result
 
 

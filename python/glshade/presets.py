@@ -23,13 +23,12 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._intake import FloatArray
-from ._normals import Weighting
+from ._dispatch import shade
 from ._params import real_array, rgb, scalar, vector3
 from ._records import ValueRecord
 from ._scene import Light, Lights, Material, Scene
-from ._shade import shade
 from ._shade_mesh import shade_mesh
+from ._typing import FloatArray, Per, Weighting
 
 __all__ = ["Preset", "directx11", "learnopengl", "opengl", "phong_illumination"]
 
@@ -67,7 +66,7 @@ class Preset(ValueRecord):
         vertices: Any,
         faces: ArrayLike | None = None,
         *,
-        per: Literal["vertex", "face"] = "vertex",
+        per: Per = "vertex",
         weighting: Weighting = "angle",
         **extra: Any,
     ) -> FloatArray:

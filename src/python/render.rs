@@ -61,7 +61,7 @@ fn render_typed<'py, T: Element + Real>(
 /// (height, width) depth, of the vertices' dtype.
 #[pyfunction]
 #[pyo3(signature = (
-    vertices, faces, scene, view, projection, model, width, height, shading, normals, colors,
+    vertices, faces, scene, *, view, projection, model, width, height, shading, normals, colors,
     color_material, color_material_face, normalize, rescale_normal, cull, background
 ))]
 pub fn render<'py>(

@@ -386,6 +386,9 @@ impl Material {
     }
 }
 
+/// A scene's constructor arguments for pickle: the positional ones and the keywords.
+type NewArgs<'py> = ((Py<Lights>, Py<Material>), Bound<'py, PyDict>);
+
 /// Lights, materials and the light model, checked; see `glshade.Scene`.
 #[pyclass(frozen, module = "glshade._glshade")]
 pub struct Scene {
@@ -400,7 +403,10 @@ impl Scene {
     /// The scene of these lights, materials (`back_material` None: the front one) and light
     /// model values. Raises `ValueError` naming a bad value.
     #[new]
-    #[pyo3(signature = (lights, material, back_material, global_ambient, viewer, two_side, separate_specular, specular, specular_gate))]
+    #[pyo3(signature = (
+        lights, material, *, back_material, global_ambient, viewer, two_side, separate_specular,
+        specular, specular_gate
+    ))]
     fn new(
         lights: Bound<'_, Lights>,
         material: Bound<'_, Material>,
@@ -461,33 +467,72 @@ impl Scene {
             .is_ok_and(|o| o.get().state == self.state)
     }
 
-    #[allow(clippy::type_complexity)]
-    fn __getnewargs__(
-        &self,
-        py: Python<'_>,
-    ) -> (
-        Py<Lights>,
-        Py<Material>,
-        Option<Py<Material>>,
-        [f64; 4],
-        [f64; 4],
-        bool,
-        bool,
-        &'static str,
-        bool,
-    ) {
+    /// The lights, as one `Lights`.
+    #[getter]
+    fn lights(&self, py: Python<'_>) -> Py<Lights> {
+        self.lights.clone_ref(py)
+    }
+
+    /// The front material.
+    #[getter]
+    fn material(&self, py: Python<'_>) -> Py<Material> {
+        self.material.clone_ref(py)
+    }
+
+    /// The back material as given, or None (the front one).
+    #[getter]
+    fn back_material(&self, py: Python<'_>) -> Option<Py<Material>> {
+        self.back_material.as_ref().map(|m| m.clone_ref(py))
+    }
+
+    /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
+    #[getter]
+    fn global_ambient(&self) -> [f64; 4] {
+        self.state.global_ambient
+    }
+
+    /// The homogeneous viewer position in eye coordinates.
+    #[getter]
+    fn viewer(&self) -> [f64; 4] {
+        self.state.viewer
+    }
+
+    /// `GL_LIGHT_MODEL_TWO_SIDE`.
+    #[getter]
+    fn two_side(&self) -> bool {
+        self.state.two_side
+    }
+
+    /// `GL_SEPARATE_SPECULAR_COLOR`.
+    #[getter]
+    fn separate_specular(&self) -> bool {
+        self.state.separate_specular
+    }
+
+    /// The specular model: `"blinn"` or `"phong"`.
+    #[getter]
+    fn specular(&self) -> &'static str {
+        specular_name(self.state.specular)
+    }
+
+    /// GL's f_i: no specular from a light unless n·VP > 0 (`False`: learnopengl's shaders).
+    #[getter]
+    fn specular_gate(&self) -> bool {
+        self.state.specular_gate
+    }
+
+    /// Pickling: the constructor's arguments, positional and keyword.
+    fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<NewArgs<'py>> {
         let s = &self.state;
-        (
-            self.lights.clone_ref(py),
-            self.material.clone_ref(py),
-            self.back_material.as_ref().map(|m| m.clone_ref(py)),
-            s.global_ambient,
-            s.viewer,
-            s.two_side,
-            s.separate_specular,
-            specular_name(s.specular),
-            s.specular_gate,
-        )
+        let keywords = PyDict::new(py);
+        keywords.set_item("back_material", self.back_material(py))?;
+        keywords.set_item("global_ambient", PyTuple::new(py, s.global_ambient)?)?;
+        keywords.set_item("viewer", PyTuple::new(py, s.viewer)?)?;
+        keywords.set_item("two_side", s.two_side)?;
+        keywords.set_item("separate_specular", s.separate_specular)?;
+        keywords.set_item("specular", specular_name(s.specular))?;
+        keywords.set_item("specular_gate", s.specular_gate)?;
+        Ok(((self.lights(py), self.material(py)), keywords))
     }
 }
 

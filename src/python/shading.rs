@@ -92,10 +92,11 @@ fn options_from(
 
 /// Lights the vertices of `scene`; see `glshade.shade`, whose intake prepared the arrays
 /// (float32 or float64 of one dtype, C-contiguous, positions and normals of one shape
-/// (..., 3), colours (..., 3|4), `out` checked against the inputs).
+/// (..., 3), colours (..., 3|4), `out` checked against the inputs). The options are keywords, so
+/// no positional order ties the Python call to this signature.
 #[pyfunction]
 #[pyo3(signature = (
-    positions, normals, scene, modelview, normalize, rescale_normal, colors, color_material,
+    positions, normals, scene, *, modelview, normalize, rescale_normal, colors, color_material,
     color_material_face, accuracy, strict, out
 ))]
 pub fn shade<'py>(
@@ -133,7 +134,7 @@ pub fn shade<'py>(
 /// ("float32" or "float64"); see `glshade.Scene.plan`.
 #[pyfunction]
 #[pyo3(signature = (
-    scene, modelview, normalize, rescale_normal, color_material, color_material_face, accuracy,
+    scene, *, modelview, normalize, rescale_normal, color_material, color_material_face, accuracy,
     strict, dtype
 ))]
 pub fn describe(

@@ -5,17 +5,18 @@ arguments and results. moderngl is an optional dependency, imported on first use
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._intake import integer, rows, vertices
+from .._intake import integer, rgba, rows, vertices
 from .._records import ValueRecord
 from .._render import Image
 from .._render_input import render_input
-from .._scene import Scene, _rgba
-from ._shaders import Shaders, Shading, compute_shader, raster_shaders
+from .._scene import Scene
+from .._typing import Cull, Face, Shading, Space
+from ._shaders import Shaders, compute_shader, raster_shaders
 
 _contexts: list[Any] = []
 _programs: dict[tuple[int, str], Any] = {}
@@ -92,7 +93,7 @@ def shade(
     rescale_normal: bool = False,
     colors: ArrayLike | None = None,
     color_material: str | None = None,
-    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    color_material_face: Face = "front_and_back",
     context: Any = None,
 ) -> NDArray[np.float32]:
     """`gs.shade` computed by `compute_shader`'s GLSL on an OpenGL context, in float32.
@@ -198,8 +199,8 @@ def rasterize(
     normalize: bool = True,
     colors: ArrayLike | None = None,
     color_material: str | None = None,
-    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
-    cull: Literal["back", "front", "front_and_back"] | None = None,
+    color_material_face: Face = "front_and_back",
+    cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
     context: Any = None,
 ) -> Targets:
@@ -273,7 +274,7 @@ def rasterize(
         ctx.provoking_vertex = moderngl.LAST_VERTEX_CONVENTION
         fbo.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
         textures[0].write(
-            np.tile(np.asarray(_rgba(background, "background"), np.float32), size[0] * size[1])
+            np.tile(np.asarray(rgba(background, "background"), np.float32), size[0] * size[1])
         )
         if len(np.asarray(faces)):
             vao.render(moderngl.TRIANGLES)
@@ -300,13 +301,13 @@ def render(
     normals: ArrayLike | None = None,
     colors: Any = None,
     color_material: str | None = None,
-    color_material_face: Literal["front", "back", "front_and_back"] = "front_and_back",
+    color_material_face: Face = "front_and_back",
     model: ArrayLike | None = None,
     normalize: bool = True,
     rescale_normal: bool = False,
-    cull: Literal["back", "front", "front_and_back"] | None = None,
+    cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
-    lights_in: Literal["eye", "world"] = "eye",
+    lights_in: Space = "eye",
     depth: bool = False,
     context: Any = None,
 ) -> Image | tuple[Image, NDArray[np.float32]]:

@@ -15,11 +15,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from .._camera import _matrix
-from .._intake import choice, flag, optional_choice
+from .._intake import choice, flag, optional_choice, transform
 from .._scene import Scene
-
-Float64Array = NDArray[np.float64]
+from .._typing import Float64Array
 
 COLOR_MATERIAL_MODES = ("ambient", "diffuse", "specular", "emission", "ambient_and_diffuse")
 COLOR_MATERIAL_FACES = {"front": (0,), "back": (1,), "front_and_back": (0, 1)}
@@ -90,7 +88,7 @@ def make_plan(
     bound and replace that material parameter)."""
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    m = None if modelview is None else _matrix(modelview, "modelview")
+    m = None if modelview is None else transform(modelview, "modelview")
     if m is not None and not np.array_equal(m[3], [0.0, 0.0, 0.0, 1.0]):
         raise ValueError(f"modelview must be affine (last row (0, 0, 0, 1)), got last row {m[3]}")
     if m is not None and np.linalg.det(m[:3, :3]) == 0:

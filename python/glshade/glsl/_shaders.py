@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any, Literal
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -14,11 +14,10 @@ from numpy.typing import ArrayLike, NDArray
 from .._intake import choice
 from .._records import ValueRecord
 from .._scene import Scene
+from .._typing import Shading
 from . import _source
 from ._plan import Plan, make_plan
 from ._values import values
-
-Shading = Literal["phong", "gouraud", "flat"]
 
 
 @dataclass(frozen=True, eq=False)

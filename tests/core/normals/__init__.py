@@ -1,0 +1,1 @@
+"""Face and vertex normals."""

@@ -1,0 +1,1 @@
+"""Scene objects and records: pickling, copying, equality and indexing."""

@@ -1,0 +1,1 @@
+"""The rasteriser: coverage, depth, colours, images, cameras, world lights, `gs.compare`."""

@@ -1,0 +1,69 @@
+"""SIGINT half a second into a long call: the call stops with KeyboardInterrupt. Prints
+"interrupted <seconds after the signal>" or "finished <seconds>".
+
+Usage: python tests/scripts/interrupt.py {shade,shade-out,vertex_normals,face_normals,render}
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import sys
+import threading
+import time
+from collections.abc import Callable
+
+import numpy as np
+
+import glshade as gs
+
+
+def prepare(case: str) -> Callable[[], object]:
+    """Allocates the inputs of `case` and returns its long call."""
+    rng = np.random.default_rng(0)
+    spot = gs.Light(position=(1, 2, 3, 1), spot_cutoff=45, spot_exponent=3)
+    shiny = gs.Material(specular=(1, 1, 1), shininess=9.5)
+    if case in ("shade", "shade-out"):
+        p = rng.normal(size=(4_000_000, 3))
+        if case == "shade":
+            scene = gs.Scene(lights=[spot] * 64, material=shiny)
+            return lambda: gs.shade(p, p, scene, accuracy="exact")
+        out = np.zeros((4_000_000, 4))
+        scene = gs.Scene(lights=[spot] * 64, material=shiny)
+        return lambda: gs.shade(p, p, scene, out=out)
+    if case in ("vertex_normals", "face_normals"):
+        v = rng.normal(size=(4_000_000, 3))
+        f = rng.integers(0, 4_000_000, (8_000_000, 3))
+        if case == "vertex_normals":
+            return lambda: [gs.vertex_normals(v, f) for _ in range(20)]
+        return lambda: [gs.face_normals(v, f) for _ in range(40)]
+    if case == "render":
+        import trimesh
+
+        m = trimesh.creation.icosphere(5)
+        scene = gs.Scene(lights=[spot] * 64, material=shiny)
+        camera = gs.Camera()
+        return lambda: gs.render(m.vertices * 0.8, m.faces, scene, camera, width=4096, height=4096)
+    raise SystemExit(f"unknown case {case!r}")
+
+
+def main(case: str) -> None:
+    call = prepare(case)
+    sent: list[float] = []
+
+    def interrupt() -> None:
+        time.sleep(0.5)
+        sent.append(time.perf_counter())
+        os.kill(os.getpid(), signal.SIGINT)
+
+    threading.Thread(target=interrupt).start()
+    start = time.perf_counter()
+    try:
+        call()
+        print("finished", time.perf_counter() - start)
+    except KeyboardInterrupt:
+        print("interrupted", time.perf_counter() - sent[0])
+
+
+if __name__ == "__main__":
+    main(sys.argv[1])
