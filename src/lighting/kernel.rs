@@ -25,7 +25,7 @@ use crate::lighting::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::lighting::shape::{flag, General, Shape};
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
-use crate::simd::float::Float;
+use crate::simd::float::{ldexp, Float};
 use crate::simd::lanes::{
     normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
     MAX_LANES, V3,
@@ -48,18 +48,6 @@ fn log2_floor(x: f64) -> i32 {
         (x, 0)
     };
     ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023 - lift
-}
-
-/// x·2^k for k in [−2044, 2046], in two exact steps (inlined, unlike `real::ldexp`); exact
-/// unless the result is subnormal or beyond the range.
-#[inline(always)]
-fn times_power_of_two(x: f64, k: i32) -> f64 {
-    let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
-    let half = k / 2;
-    step(
-        step(x, half.clamp(-1022, 1023)),
-        (k - half).clamp(-1022, 1023),
-    )
 }
 
 /// att_i of eq. 2.4; zero coefficients are skipped so an infinite distance gives 0, not NaN, and
@@ -561,14 +549,14 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
             let in_range = y[0] * y[0] + y[1] * y[1] + y[2] * y[2] <= T::ONE / T::MIN_POSITIVE;
             if !in_range && v.iter().all(|c| c.is_finite()) && top(v) != 0.0 {
                 let shift = log2_floor(top(v)) + 3;
-                y = transform(v.map(|c| T::from_f64(times_power_of_two(c.to_f64(), -shift))));
+                y = transform(v.map(|c| T::from_f64(ldexp(c.to_f64(), -shift))));
                 let y_top = top(y);
                 let back = if y_top == 0.0 {
                     0
                 } else {
                     shift.min(normal_exponent::<T>() - 2 - log2_floor(y_top))
                 };
-                y = y.map(|c| T::from_f64(times_power_of_two(c.to_f64(), back)));
+                y = y.map(|c| T::from_f64(ldexp(c.to_f64(), back)));
             }
             for (plane, c) in out.iter_mut().zip(y) {
                 plane[i] = c;

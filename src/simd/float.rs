@@ -241,6 +241,8 @@ pub(crate) fn exponent(x: f64) -> i32 {
 
 /// `x · 2^k`, in steps that stay within `f64`'s exponent range (2^k itself may not be one:
 /// k up to ±2044); exact unless the result is subnormal (then rounded) or beyond the range (±inf).
+/// Always inlined: the kernel calls it inside its `#[target_feature]` functions.
+#[inline(always)]
 pub(crate) fn ldexp(x: f64, k: i32) -> f64 {
     // k in [−1022, 1023]: a biased exponent in [1, 2046], so 2^k is a normal f64.
     let step = |x: f64, k: i32| x * f64::from_bits(u64::from((1023 + k).unsigned_abs()) << 52);
