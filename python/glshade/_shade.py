@@ -1,8 +1,9 @@
-"""`shade_arrays`: the OpenGL lighting equation over arrays of vertices in memory, one native
-call. `glshade.shade` (`_dispatch`) hands dask collections to `glshade.dask`, which shades each
-chunk with this."""
+"""`shade`: the OpenGL lighting equation over arrays of vertices, one native call; dask
+collections go to `_lazy`, which shades them chunk by chunk with this same function."""
 
 from __future__ import annotations
+
+from typing import cast
 
 from numpy.typing import ArrayLike
 
@@ -11,10 +12,10 @@ from ._intake import choice, flag, matrix, optional_choice, out_array, vertices
 from ._scene import Scene
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
 
-__all__ = ["shade_arrays"]
+__all__ = ["shade"]
 
 
-def shade_arrays(
+def shade(
     positions: ArrayLike,
     normals: ArrayLike,
     scene: Scene,
@@ -29,9 +30,99 @@ def shade_arrays(
     strict: bool = False,
     out: FloatArray | None = None,
 ) -> FloatArray:
-    """`glshade.shade` of arrays in memory (numpy arrays or anything numpy reads)."""
+    """Light vertices with OpenGL's fixed-function lighting equation (GL 2.1 section 2.14.1).
+
+    Parameters
+    ----------
+    positions : (..., 3) array-like
+        Vertex positions, in model coordinates (eye coordinates when `modelview` is None).
+    normals : (..., 3) array-like
+        Vertex normals; positions, normals and colours broadcast against each other (one normal
+        for every position, say), and their common leading shape is the result's. Used as
+        given, as in GL: a non-unit normal scales the diffuse and specular terms unless
+        `normalize` is set.
+    scene : Scene
+        Lights (in eye coordinates), materials and light model.
+    modelview : (4, 4) float, optional
+        An affine modelview matrix M (row-major, as numpy prints it): positions become
+        ``M @ (p, 1)``, normals ``inv(M[:3, :3]).T @ n`` (GL's normal matrix).
+    normalize : bool
+        ``GL_NORMALIZE``: scale the transformed normals to unit length.
+    rescale_normal : bool
+        ``GL_RESCALE_NORMAL``: scale the transformed normals by M's rescale factor.
+    colors : (..., 3) or (..., 4) array-like, optional
+        Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1).
+    color_material : {"ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        The material parameter(s) the colours replace; default ``"ambient_and_diffuse"`` (GL's)
+        when `colors` is given.
+    color_material_face : {"front", "back", "front_and_back"}
+        The material(s) the colours replace (GL's default: both).
+    accuracy : {"fast", "exact", "display"}
+        ``"fast"`` (default) computes in the input's precision; ``"exact"`` computes in float64
+        whatever the input and rounds the result once to its dtype; ``"display"`` computes in
+        the input's precision with cheaper ``exp`` and ``ln``, every output within 2^-10 of the
+        exact value (a quarter of an 8-bit step). The README states the error bound of each.
+    strict : bool
+        Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
+    out : ndarray, optional
+        The array to write the result into: exactly the result's dtype and shape, C-contiguous,
+        aligned, writeable, and sharing no memory with an input.
+
+    Returns
+    -------
+    (..., 4) or (k, ..., 4) ndarray of the computation dtype (a dask array for dask inputs)
+        RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` the
+        result has a leading axis of the ``k`` colours named by ``scene.outputs`` (front and
+        back; primary and secondary; or all four). A vertex whose position, normal or colour
+        is NaN or infinite gets NaN; no other vertex is affected.
+
+    Notes
+    -----
+    When `positions`, `normals` or `colors` is a dask array, the call is `glshade.dask.shade`:
+    lazy, one task per chunk of rows, and ``out`` is refused.
+
+    The computation runs in float32 when `positions` and `normals` are float32 (or float16)
+    and in float64 otherwise (float64, integers, bools, Python sequences); any memory layout
+    is accepted (see the README's intake table). Vertices are shaded in parallel with the GIL
+    released; the result does not depend on the number of threads. Ctrl-C stops a long call
+    within a fraction of a second; `out` then holds some rows shaded and others as they were.
+
+    Raises
+    ------
+    TypeError
+        For complex, string or object arrays, a non-string name or a non-bool flag.
+    ValueError
+        For wrong shapes, shapes that do not broadcast, unknown names, a bad `out` or one that
+        shares memory with an input, or a singular, projective or non-finite `modelview`.
+    MemoryError
+        When the result cannot be allocated.
+
+    Examples
+    --------
+    >>> import numpy as np, glshade as gs
+    >>> scene = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))])
+    >>> gs.shade(np.zeros((1, 3)), np.array([[0, 0, 1.0]]), scene)
+    array([[0.84, 0.84, 0.84, 1.  ]])
+    >>> gs.shade(np.zeros((480, 640, 3), np.float32), (0, 0, 1), scene).shape  # one normal for all
+    (480, 640, 4)
+    """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    if any(_is_dask(x) for x in (positions, normals, colors)):
+        from ._lazy import shade_lazily
+
+        if out is not None:
+            raise TypeError(
+                "out= cannot take a lazy result: store a dask result with "
+                "glshade.dask.to_npy or dask.array.store"
+            )
+        options = {
+            "modelview": modelview, "normalize": normalize, "rescale_normal": rescale_normal,
+            "color_material": color_material, "color_material_face": color_material_face,
+            "accuracy": accuracy, "strict": strict,
+        }  # fmt: skip
+        lazy = shade_lazily(shade, positions, normals, scene, colors, options)
+        return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
     p, n, c = vertices(positions, normals, colors)
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
@@ -52,3 +143,8 @@ def shade_arrays(
         out=out,
     )
     return result
+
+
+def _is_dask(x: object) -> bool:
+    """A dask collection, told without importing dask."""
+    return hasattr(x, "__dask_graph__") and type(x).__module__.startswith("dask")

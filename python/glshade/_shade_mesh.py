@@ -7,9 +7,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._dispatch import shade
 from ._normals import face_normals, vertex_normals
 from ._scene import Scene
+from ._shade import shade
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Per, Weighting
 

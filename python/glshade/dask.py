@@ -25,7 +25,6 @@ array([0.84000003, 0.84000003, 0.84000003, 1.        ], dtype=float32)
 from __future__ import annotations
 
 import os
-import string
 import sys
 from pathlib import Path
 from typing import Any, cast
@@ -35,16 +34,16 @@ from numpy.typing import ArrayLike, NDArray
 
 try:
     import dask.array as da
-    from dask.delayed import delayed
 except ImportError as error:  # pragma: no cover - exercised without dask installed
     raise ImportError(
         "glshade.dask needs dask: pip install 'glshade[dask]' (dask[array] and distributed)"
     ) from error
 
 from ._intake import integer
+from ._lazy import shade_lazily
 from ._normals import vertex_normals
 from ._scene import Scene
-from ._shade import shade_arrays
+from ._shade import shade as shade_in_memory
 from ._typing import Weighting
 
 __all__ = ["from_npy", "shade", "shade_mesh", "to_npy"]
@@ -93,40 +92,7 @@ def shade(
             "glshade.dask.shade does not take out=: store the result with glshade.dask.to_npy, "
             "dask.array.store or dask.array.to_zarr"
         )
-    inputs = [_dask_array(positions, "positions"), _dask_array(normals, "normals")]
-    if colors is not None:
-        inputs.append(_dask_array(colors, "colors"))
-    try:
-        leading = np.broadcast_shapes(*(x.shape[:-1] for x in inputs))
-    except ValueError:
-        shapes = ", ".join(f"{name} {x.shape}" for name, x in zip(_NAMES, inputs, strict=False))
-        raise ValueError(f"shapes do not broadcast over their leading axes: {shapes}") from None
-    # One empty call checks every option now and gives the result's dtype and leading axis.
-    empty = [np.zeros((0, x.shape[-1]), x.dtype) for x in inputs]
-    empty_colors = empty[2] if colors is not None else None
-    probe = shade_arrays(empty[0], empty[1], scene, colors=empty_colors, **shade_kwargs)
-    outputs = probe.shape[0] if probe.ndim == 3 else None
-    axes = string.ascii_lowercase[: len(leading)]
-    arguments: list[Any] = []
-    for x, last in zip(inputs, "ccz", strict=False):
-        x = da.broadcast_to(x, (*leading, x.shape[-1])).rechunk({len(leading): -1})
-        arguments += [x, (*axes, last)]
-    # One key for the scene and keywords: every task refers to it; each worker fetches it once.
-    call = delayed((scene, shade_kwargs), pure=True)
-    index = ("k", *axes, "c") if outputs else (*axes, "c")
-    new_axes = {"k": outputs} if outputs else {}
-    return da.blockwise(
-        _shade_chunk,
-        index,
-        *arguments,
-        call,
-        None,
-        new_axes=new_axes,
-        adjust_chunks={"c": 4},
-        dtype=probe.dtype,
-        meta=np.zeros((0,) * len(index), probe.dtype),
-        concatenate=True,
-    )
+    return shade_lazily(shade_in_memory, positions, normals, scene, colors, shade_kwargs)
 
 
 def shade_mesh(
@@ -248,31 +214,12 @@ def to_npy(array: da.Array, path: str | os.PathLike[str]) -> NDArray[Any]:
     return mapped
 
 
-_NAMES = ("positions", "normals", "colors")
-
-
-def _dask_array(x: Any, name: str) -> da.Array:
-    """A dask array of at least one axis and a last axis of 3 or 4, named in errors."""
-    array = x if isinstance(x, da.Array) else da.from_array(np.asarray(x))
-    if array.ndim == 0:
-        raise ValueError(f"{name} must have shape (..., 3), got shape ()")
-    return array
-
-
 def _read_rows(file: _NpyFile, block_info: dict[Any, Any] | None = None) -> NDArray[Any]:
     """One task: the rows of one chunk of a ``.npy`` file, mapped, not copied."""
     assert block_info is not None  # dask passes it to functions that take it
     (start, stop), *_ = block_info[None]["array-location"]
     rows: NDArray[Any] = np.load(file.path, mmap_mode="r")[start:stop]
     return rows
-
-
-def _shade_chunk(*arguments: Any) -> NDArray[Any]:
-    """One task: `glshade.shade` over one chunk of rows."""
-    *arrays, (scene, shade_kwargs) = arguments
-    colors = arrays[2] if len(arrays) == 3 else None
-    result: NDArray[Any] = shade_arrays(arrays[0], arrays[1], scene, colors=colors, **shade_kwargs)
-    return result
 
 
 class _NpyFile:

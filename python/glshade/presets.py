@@ -23,10 +23,10 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._dispatch import shade
 from ._params import real_array, rgb, scalar, vector3
 from ._records import ValueRecord
 from ._scene import Light, Lights, Material, Scene
+from ._shade import shade
 from ._shade_mesh import shade_mesh
 from ._typing import FloatArray, Per, Weighting
 
