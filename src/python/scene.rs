@@ -444,15 +444,7 @@ impl Scene {
     #[classattr]
     #[allow(non_snake_case)]
     fn DEFAULTS(py: Python<'_>) -> PyResult<Bound<'_, PyDict>> {
-        let s = GlScene::default();
-        let dict = PyDict::new(py);
-        dict.set_item("global_ambient", PyTuple::new(py, s.global_ambient)?)?;
-        dict.set_item("viewer", PyTuple::new(py, s.viewer)?)?;
-        dict.set_item("two_side", s.two_side)?;
-        dict.set_item("separate_specular", s.separate_specular)?;
-        dict.set_item("specular", specular_name(s.specular))?;
-        dict.set_item("specular_gate", s.specular_gate)?;
-        Ok(dict)
+        light_model(py, &GlScene::default())
     }
 
     /// The names of the colours `shade` returns, in output order.
@@ -485,16 +477,16 @@ impl Scene {
         self.back_material.as_ref().map(|m| m.clone_ref(py))
     }
 
-    /// `GL_LIGHT_MODEL_AMBIENT`, RGBA.
+    /// `GL_LIGHT_MODEL_AMBIENT`, RGBA, a tuple as in `DEFAULTS`.
     #[getter]
-    fn global_ambient(&self) -> [f64; 4] {
-        self.state.global_ambient
+    fn global_ambient<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(py, self.state.global_ambient)
     }
 
-    /// The homogeneous viewer position in eye coordinates.
+    /// The homogeneous viewer position in eye coordinates, a tuple as in `DEFAULTS`.
     #[getter]
-    fn viewer(&self) -> [f64; 4] {
-        self.state.viewer
+    fn viewer<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyTuple>> {
+        PyTuple::new(py, self.state.viewer)
     }
 
     /// `GL_LIGHT_MODEL_TWO_SIDE`.
@@ -523,17 +515,23 @@ impl Scene {
 
     /// Pickling: the constructor's arguments, positional and keyword.
     fn __getnewargs_ex__<'py>(&self, py: Python<'py>) -> PyResult<NewArgs<'py>> {
-        let s = &self.state;
-        let keywords = PyDict::new(py);
+        let keywords = light_model(py, &self.state)?;
         keywords.set_item("back_material", self.back_material(py))?;
-        keywords.set_item("global_ambient", PyTuple::new(py, s.global_ambient)?)?;
-        keywords.set_item("viewer", PyTuple::new(py, s.viewer)?)?;
-        keywords.set_item("two_side", s.two_side)?;
-        keywords.set_item("separate_specular", s.separate_specular)?;
-        keywords.set_item("specular", specular_name(s.specular))?;
-        keywords.set_item("specular_gate", s.specular_gate)?;
         Ok(((self.lights(py), self.material(py)), keywords))
     }
+}
+
+/// The light model of `s` as the keywords of `Scene`: `global_ambient`, `viewer`, `two_side`,
+/// `separate_specular`, `specular` and `specular_gate`.
+fn light_model<'py>(py: Python<'py>, s: &GlScene) -> PyResult<Bound<'py, PyDict>> {
+    let dict = PyDict::new(py);
+    dict.set_item("global_ambient", PyTuple::new(py, s.global_ambient)?)?;
+    dict.set_item("viewer", PyTuple::new(py, s.viewer)?)?;
+    dict.set_item("two_side", s.two_side)?;
+    dict.set_item("separate_specular", s.separate_specular)?;
+    dict.set_item("specular", specular_name(s.specular))?;
+    dict.set_item("specular_gate", s.specular_gate)?;
+    Ok(dict)
 }
 
 fn specular_name(specular: Specular) -> &'static str {
