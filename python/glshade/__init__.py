@@ -57,3 +57,8 @@ def __getattr__(name: str) -> Any:
 
         return getattr(lab_report, name)
     raise AttributeError(f"module 'glshade' has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    """The module's names with the two the lab gives on first use, so completion offers them."""
+    return sorted({*globals(), "report", "Report"})

@@ -212,6 +212,8 @@ def _run(code: str) -> str:
 def test_import_glshade_leaves_the_lab_unimported() -> None:
     code = (
         "import json, sys, glshade\n"
+        "names = dir(glshade)\n"  # completion lists the lazy names without loading the lab
+        "assert 'report' in names and 'Report' in names, names\n"
         "print(json.dumps(sorted(m for m in sys.modules if m.startswith('glshade.'))))\n"
     )
     loaded = json.loads(_run(code))
