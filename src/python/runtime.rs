@@ -4,7 +4,8 @@
 
 use std::borrow::Cow;
 use std::panic::{catch_unwind, AssertUnwindSafe};
-use std::sync::{Arc, Mutex, OnceLock, TryLockError};
+use std::sync::atomic::{AtomicU32, AtomicU8, Ordering};
+use std::sync::{Arc, Mutex, TryLockError};
 use std::time::Duration;
 
 use pyo3::exceptions::{PyIndexError, PyMemoryError, PyRuntimeError, PyValueError};
@@ -32,8 +33,15 @@ pub fn to_pyerr(e: Error) -> PyErr {
     }
 }
 
-/// The process that started rayon's global pool, or `None` when starting it failed.
-static GLOBAL: OnceLock<Option<u32>> = OnceLock::new();
+/// The process that claimed the start of rayon's global pool (0: none yet). A `fork()`ed child
+/// inherits its parent's claim, and so never waits on a start that was running in the parent.
+static STARTER: AtomicU32 = AtomicU32::new(0);
+
+/// How the claimed start went: [`PENDING`], [`STARTED`] or [`FAILED`]; read only by the claimer.
+static START: AtomicU8 = AtomicU8::new(PENDING);
+const PENDING: u8 = 0;
+const STARTED: u8 = 1;
+const FAILED: u8 = 2;
 
 /// The threads a call runs on.
 enum Threads {
@@ -52,13 +60,20 @@ enum Threads {
 /// A `fork()`ed child inherits the global pool without its threads, so it uses its own too.
 fn threads() -> Result<Threads, Error> {
     let pid = std::process::id();
-    let started = GLOBAL.get_or_init(|| {
-        rayon::ThreadPoolBuilder::new()
-            .build_global()
-            .ok()
-            .map(|()| pid)
-    });
-    if *started == Some(pid) {
+    match STARTER.compare_exchange(0, pid, Ordering::AcqRel, Ordering::Acquire) {
+        Ok(_) => {
+            let started = rayon::ThreadPoolBuilder::new().build_global().is_ok();
+            START.store(if started { STARTED } else { FAILED }, Ordering::Release);
+        }
+        // Another thread of this process is starting it: a few milliseconds.
+        Err(claimer) if claimer == pid => {
+            while START.load(Ordering::Acquire) == PENDING {
+                std::thread::yield_now();
+            }
+        }
+        Err(_) => return pool().map(Threads::Own), // the parent's pool: its threads are gone
+    }
+    if START.load(Ordering::Acquire) == STARTED {
         return Ok(Threads::Global);
     }
     pool().map(Threads::Own)

@@ -41,7 +41,8 @@ def main(case: str) -> None:
     with open("/proc/self/statm") as statm:
         virtual = int(statm.read().split()[0]) * resource.getpagesize()
     # 256 MiB above what the process maps now: the inputs fit, the call's outputs do not.
-    resource.setrlimit(resource.RLIMIT_AS, (virtual + (256 << 20), resource.RLIM_INFINITY))
+    hard = resource.getrlimit(resource.RLIMIT_AS)[1]
+    resource.setrlimit(resource.RLIMIT_AS, (virtual + (256 << 20), hard))
     try:
         call()
     except MemoryError as e:
