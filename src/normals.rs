@@ -10,7 +10,7 @@
 //!
 //! The normals layer: [`adjacency`] (the vertex-to-face gather, which the renderer reuses) and
 //! [`triangle`] (one triangle's geometry) below this module's entry points. Uses
-//! [`crate::numbers`], [`crate::memory`] and [`crate::errors`].
+//! [`crate::numbers`], [`crate::simd`], [`crate::memory`] and [`crate::errors`].
 
 pub mod adjacency;
 pub mod triangle;

@@ -5,8 +5,8 @@
 //!
 //! The render layer, top of the core: besides those four, [`camera`] (view and projection)
 //! and [`mesh`] (what is drawn). Uses every layer below it: [`crate::normals`],
-//! [`crate::lighting`], [`crate::gl`], [`crate::numbers`], [`crate::memory`] and
-//! [`crate::errors`].
+//! [`crate::lighting`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
+//! and [`crate::errors`].
 
 pub mod camera;
 pub mod clip;

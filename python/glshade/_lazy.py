@@ -71,7 +71,7 @@ _NAMES = ("positions", "normals", "colors")
 
 
 def _dask_array(x: Any, name: str) -> da.Array:
-    """A dask array of at least one axis and a last axis of 3 or 4, named in errors."""
+    """`x` as a dask array of at least one axis (its last axis is checked by the probe call)."""
     array = x if isinstance(x, da.Array) else da.from_array(np.asarray(x))
     if array.ndim == 0:
         raise ValueError(f"{name} must have shape (..., 3), got shape ()")

@@ -5,7 +5,7 @@
 //! A flag the shape leaves open (`None`) is read from the plan once per block, as in the
 //! general kernel. A call runs a shape's kernel only when its plan and scene have every fixed
 //! flag ([`fits`]), so the same operations run and the bits are those of the general kernel
-//! (`shape_tests` checks it).
+//! (`tests::shape` checks it).
 
 use crate::gl::scene::Specular;
 use crate::lighting::plan::{LightKind, Plan};

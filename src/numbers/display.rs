@@ -7,7 +7,7 @@
 //! `exp` ≤ 4e-6 (degree 4 in 2^r, r in [−½, ½]; in `f32` up to 7e-6 for |x| near 88, from
 //! the rounding of x·log2 e), `ln_1p` ≤ 2e-6 (degree 4 in the tail of ln(1 + f), f in
 //! [√½ − 1, √2 − 1]). A power exp(s·ln(1 − x)) of a unit cosine then errs by at
-//! most 2e-6/e + 4e-6 absolutely; `tests/test_stiff.py` holds the tier to 2^-10.
+//! most 2e-6/e + 4e-6 absolutely; `tests/core/accuracy/test_stiff.py` holds the tier to 2^-10.
 
 // Coefficients are fitted to the minimax relative error (reweighted least squares).
 #![allow(clippy::excessive_precision, clippy::unreadable_literal)]

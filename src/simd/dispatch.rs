@@ -8,10 +8,10 @@
 //! that set's target features. Every lane runs the same IEEE operations, so every instruction set
 //! gives the same bits (a test checks it).
 //!
-//! `unsafe` appears here and in `lanes::x86` (calling a `#[target_feature]` function is sound
-//! only on a CPU with those features, which [`Isa::supported`] has checked), and in two
-//! functions that hand memory to be written, not read, to `shade` (`shade::as_uninit`, and
-//! the binding's new numpy arrays).
+//! `unsafe` appears here and in `lanes::x86` and `lanes::sse2_fma` (calling a
+//! `#[target_feature]` function is sound only on a CPU with those features, which
+//! [`Isa::supported`] has checked), and in functions that hand memory to be written, not read,
+//! to `shade` (`lighting::shade::as_uninit`, and the binding's two new numpy arrays).
 #![allow(unsafe_code)]
 
 use std::sync::OnceLock;

@@ -32,23 +32,41 @@ fn sources(dir: &Path, found: &mut Vec<PathBuf>) {
     }
 }
 
-/// The first segment of every `crate::` path in the code of `text` (comments dropped).
-fn crate_paths(text: &str) -> Vec<(usize, String)> {
+/// A path from the crate root in a file's code: its line, its first segment, and whether it
+/// was written `crate::` (else `super::` as many times as the file lies deep below `src/`,
+/// which from the file's own scope is the root too; inside an inline module it is not, so only
+/// layer names count there).
+struct RootPath {
+    line: usize,
+    segment: String,
+    via_crate: bool,
+}
+
+/// Every path from the crate root in the code of `text` (comments dropped), for a file `depth`
+/// modules below the root.
+fn crate_paths(text: &str, depth: usize) -> Vec<RootPath> {
+    let supers = "super::".repeat(depth);
     let mut paths = Vec::new();
     for (number, line) in text.lines().enumerate() {
         let code = line.split("//").next().unwrap_or("");
-        let mut rest = code;
-        while let Some(at) = rest.find("crate::") {
-            let preceded = rest[..at].chars().next_back();
-            rest = &rest[at + "crate::".len()..];
-            if preceded.is_some_and(|c| c.is_alphanumeric() || c == '_' || c == '$') {
-                continue;
+        for root in ["crate::", supers.as_str()] {
+            for (at, _) in code.match_indices(root) {
+                let rest = &code[at + root.len()..];
+                let preceded = code[..at].chars().next_back();
+                let inside_a_path =
+                    preceded.is_some_and(|c| c.is_alphanumeric() || "_$:".contains(c));
+                if inside_a_path || rest.starts_with("super::") {
+                    continue;
+                }
+                paths.push(RootPath {
+                    line: number + 1,
+                    segment: rest
+                        .chars()
+                        .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '{')
+                        .collect(),
+                    via_crate: root == "crate::",
+                });
             }
-            let segment: String = rest
-                .chars()
-                .take_while(|c| c.is_alphanumeric() || *c == '_' || *c == '{')
-                .collect();
-            paths.push((number + 1, segment));
         }
     }
     paths
@@ -75,14 +93,21 @@ fn no_layer_uses_a_layer_above_it() {
         };
         checked += 1;
         let text = fs::read_to_string(path).unwrap();
-        for (line, segment) in crate_paths(&text) {
+        let depth = relative.components().count();
+        for RootPath {
+            line,
+            segment,
+            via_crate,
+        } in crate_paths(&text, depth)
+        {
             match rank(&segment) {
                 Some(used) if used >= own => {}
                 Some(_) => violations.push(format!(
                     "{}:{line}: layer `{top}` uses the higher layer `{segment}`",
                     relative.display()
                 )),
-                None if top == "python" => {} // the binding may use the crate's API
+                // The binding may use the crate's API; `super::` may name a sibling module.
+                None if top == "python" || !via_crate => {}
                 None => violations.push(format!(
                     "{}:{line}: `crate::{segment}` is not a layer (name the layer)",
                     relative.display()
@@ -96,8 +121,19 @@ fn no_layer_uses_a_layer_above_it() {
 
 #[test]
 fn the_check_sees_a_violation() {
-    let text = "use crate::render::camera::Camera; // crate::python is a comment\n";
-    assert_eq!(crate_paths(text), [(1, "render".to_owned())]);
+    let text = "use crate::render::camera::Camera; // crate::python is a comment\n\
+                use super::lab::stream;\n";
+    let found = |depth| {
+        crate_paths(text, depth)
+            .into_iter()
+            .map(|p| (p.line, p.segment, p.via_crate))
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(
+        found(1),
+        [(1, "render".to_owned(), true), (2, "lab".to_owned(), false)]
+    );
+    assert_eq!(found(2), [(1, "render".to_owned(), true)]); // super:: is a sibling there
     let layers = layers();
     let render = layers.iter().position(|l| l == "render").unwrap();
     let simd = layers.iter().position(|l| l == "simd").unwrap();

@@ -3,7 +3,7 @@ hold every distinction the generator and Scene.plan make over the core's feature
 gs.shade in float32; the specialisation read from the source; the values to bind; the helper's
 errors.
 
-The feature subsets are those of the core's specialisation tests (src/specialisation_tests.rs,
+The feature subsets are those of the core's specialisation tests (src/tests/specialisation.rs,
 14 features: directional and positional lights, attenuation, spot, local viewer, shininess,
 specular colour, two-sided lighting, separate specular, colour material, modelview, normalize,
 Phong, light ambient), rebuilt here as reference scenes. Their 2^14 subsets make 178 distinct

@@ -58,7 +58,7 @@ BOUNDS: dict[tuple[str, str], Bound] = {
     # float64 arithmetic, rounded once to float32: half an ulp of the result more.
     ("float32", "exact"): Bound(1e-12, 16 * U64, U32),
     ("float64", "exact"): Bound(1e-12, 16 * U64),
-    # The input's arithmetic with exp and ln within 4e-6 and 2e-6 (src/display.rs): 2^-15
+    # The input's arithmetic with exp and ln within 4e-6 and 2e-6 (src/numbers/display.rs): 2^-15
     # covers float32's 1e-5 and the functions' errors, 2^-18 the ln's error amplified by
     # s·|ln cos| <= s·tanθ; every output on unit normals lies within 2^-10, a quarter of an
     # 8-bit step.

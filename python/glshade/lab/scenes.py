@@ -1,6 +1,6 @@
 """The scenes the benchmarks time and the report measures: the benchmark's three typical scenes,
-and one class per row of the README's table of stiff cases (tests/test_stiff.py), each with the
-vertices that make it stiff."""
+and one class per row of the README's table of stiff cases (tests/core/accuracy/test_stiff.py),
+each with the vertices that make it stiff."""
 
 from __future__ import annotations
 
@@ -119,8 +119,8 @@ def _scaled(scale: float) -> Callable[[int, np.random.Generator], tuple[F64, F64
 
 
 def _scaled_scene(scale: float) -> gs.Scene:
-    """tests/test_stiff.py's scene times `scale`, the linear attenuation over it: the exact
-    colours do not change, but squared lengths overflow or underflow float32."""
+    """tests/core/accuracy/test_stiff.py's scene times `scale`, the linear attenuation over it:
+    the exact colours do not change, but squared lengths overflow or underflow float32."""
     lights = [
         gs.Light(
             position=(1.0 * scale, 2.0 * scale, 3.0 * scale, 1.0),
