@@ -118,10 +118,18 @@ def rectangle_light(
     k : int
         The number of point lights, >= 1; they sit at the Fibonacci lattice
         ``s = (i + 1/2)/k - 1/2``, ``t = frac(1/2 + i/φ) - 1/2`` (k = 1: the centre).
-    diffuse, specular, ambient : (3,) or (4,) float
-        The whole light's colours; each point light gets 1/k of the RGB.
-    constant_attenuation, linear_attenuation, quadratic_attenuation : float
-        Each point light's k0, k1, k2 (GL's attenuation, from that point).
+    diffuse : (3,) or (4,) float
+        The whole light's diffuse colour; each point light gets 1/k of the RGB.
+    specular : (3,) or (4,) float
+        The whole light's specular colour, shared the same way.
+    ambient : (3,) or (4,) float
+        The whole light's ambient colour, shared the same way.
+    constant_attenuation : float
+        Each point light's k0 (GL's attenuation ``1 / (k0 + k1 d + k2 d^2)``, from that point).
+    linear_attenuation : float
+        Each point light's k1.
+    quadratic_attenuation : float
+        Each point light's k2.
     emission : {"uniform", "lambertian"}
         ``"uniform"``: each point shines equally in all directions (the lecture's sum of point
         lights). ``"lambertian"``: each is weighted by ``max(cos θ, 0)`` from the normal
@@ -178,7 +186,17 @@ def disc_light(
     k : int
         The number of point lights, >= 1: the Fibonacci lattice of `rectangle_light` carried
         onto the disc by Shirley and Chiu's area-preserving concentric map (k = 1: the centre).
-    diffuse, specular, ambient, constant_attenuation, linear_attenuation, quadratic_attenuation
+    diffuse : (3,) or (4,) float
+        As in `rectangle_light`.
+    specular : (3,) or (4,) float
+        As in `rectangle_light`.
+    ambient : (3,) or (4,) float
+        As in `rectangle_light`.
+    constant_attenuation : float
+        As in `rectangle_light`.
+    linear_attenuation : float
+        As in `rectangle_light`.
+    quadratic_attenuation : float
         As in `rectangle_light`.
     emission : {"uniform", "lambertian"}
         As in `rectangle_light`, with `normal` as the direction the panel faces.

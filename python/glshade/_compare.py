@@ -209,9 +209,11 @@ def compare(
         The depth difference that counts.
     depth_jump : float
         A depth step between neighbours that counts as a silhouette (an inner edge).
-    alpha, reference_alpha : {"straight", "premultiplied"}
-        How each image stores colour under alpha (`reference_alpha` defaults to `alpha`);
-        premultiplied colours are divided by alpha (0 where it is 0).
+    alpha : {"straight", "premultiplied"}
+        How `image` stores colour under alpha; premultiplied colours are divided by alpha (0
+        where it is 0).
+    reference_alpha : {None, "straight", "premultiplied"}
+        How `reference` stores colour under alpha; None (the default) takes `alpha`.
     edge_width : int
         Pixels within this many (8-connected) of a silhouette are edge pixels.
     percentiles : tuple of float

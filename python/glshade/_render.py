@@ -175,8 +175,10 @@ def render(
         the specular colour is added after interpolation and the sum clamped (GL's colour sum).
     camera : Camera
         The view and projection.
-    width, height : int
-        The image size in pixels, each in [1, 16384].
+    width : int
+        The image width in pixels, in [1, 16384].
+    height : int
+        The image height in pixels, in [1, 16384].
     shading : {"phong", "gouraud", "flat"}
         Where the equation is evaluated: at every pixel with the interpolated position and
         normal (``"phong"``), at the vertices with the colours interpolated (``"gouraud"``, GL's
@@ -191,7 +193,10 @@ def render(
         defaults to "ambient_and_diffuse". Default: a mesh's own colours (``mesh.visual`` of
         kind "vertex" or "face"; a face's colour lights its three corners, which then have
         corners of their own), none otherwise. False: no colours, whatever the mesh has.
-    color_material, color_material_face : str
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `shade`: None (the default) stands for ``"ambient_and_diffuse"`` when there are
+        colours.
+    color_material_face : {"front_and_back", "front", "back"}
         As for `shade`.
     model : (4, 4) float, optional
         Model to world coordinates, affine; positions reach eye coordinates through

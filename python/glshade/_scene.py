@@ -39,21 +39,30 @@ class Lights:
 
     Parameters
     ----------
-    position : (4,) or (L, 4) float
+    position : (4,) or (L, 4) float, default: (0.0, 0.0, 1.0, 0.0)
         Homogeneous ``GL_POSITION``: ``w = 0`` is a directional light shining from direction
         ``(x, y, z)``; otherwise a point light at ``(x, y, z) / w``.
-    diffuse, specular, ambient : (3,), (4,), (L, 3) or (L, 4) float
-        Light colours; a missing alpha is 1. Negative values are legal, as in GL.
-    constant_attenuation, linear_attenuation, quadratic_attenuation : float or (L,) float
-        k0, k1, k2 >= 0; attenuation is ``1 / (k0 + k1 d + k2 d^2)`` for positional lights.
-    spot_direction : (3,) or (L, 3) float
+    diffuse : (3,), (4,), (L, 3) or (L, 4) float, default: (1.0, 1.0, 1.0, 1.0)
+        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL.
+    specular : (3,), (4,), (L, 3) or (L, 4) float, default: (1.0, 1.0, 1.0, 1.0)
+        ``GL_SPECULAR``, as `diffuse`.
+    constant_attenuation : float or (L,) float, default: 1.0
+        k0 >= 0; attenuation is ``1 / (k0 + k1 d + k2 d^2)`` for positional lights.
+    linear_attenuation : float or (L,) float, default: 0.0
+        k1 >= 0.
+    quadratic_attenuation : float or (L,) float, default: 0.0
+        k2 >= 0.
+    spot_direction : (3,) or (L, 3) float, default: (0.0, 0.0, -1.0)
         ``GL_SPOT_DIRECTION``, any nonzero length.
-    spot_exponent : float or (L,) float
+    spot_exponent : float or (L,) float, default: 0.0
         ``GL_SPOT_EXPONENT`` >= 0.
-    spot_cutoff : float or (L,) float
+    spot_cutoff : float or (L,) float, default: 180.0
         ``GL_SPOT_CUTOFF`` in degrees: in [0, 90], or 180 for no spot.
+    ambient : (3,), (4,), (L, 3) or (L, 4) float, default: (0.0, 0.0, 0.0, 1.0)
+        ``GL_AMBIENT``, as `diffuse`.
     count : int, optional
-        The number of lights when every parameter is a single value (default 1).
+        The number of lights when every parameter is a single value; None (the default) makes
+        it 1, or the length of the parameters' leading axis.
 
     Raises
     ------
@@ -114,7 +123,23 @@ class Lights:
 
     @classmethod
     def concatenate(cls, lights: Iterable[Lights]) -> Lights:
-        """All lights of several `Lights` (or `Light`) objects, in order."""
+        """All lights of several `Lights` (or `Light`) objects, in order.
+
+        Parameters
+        ----------
+        lights : iterable of Lights or Light
+            The objects whose lights are joined, in order.
+
+        Returns
+        -------
+        Lights
+            One object holding every light.
+
+        Raises
+        ------
+        TypeError
+            For an item that is not a `Light` or `Lights`, naming its index.
+        """
         parts = []
         for i, item in enumerate(lights):
             if not isinstance(item, Lights):
@@ -179,9 +204,41 @@ for _name in _glshade.Lights.PARAMETERS:
 class Light(Lights):
     """One OpenGL light (``GL_LIGHTi`` state), in eye coordinates.
 
-    Takes the same parameters as `Lights`, each a single value; see there. Attributes
+    Takes the parameters of `Lights` except `count`, each a single value. Attributes
     return that light's values (``light.position`` is a (4,) array, ``light.spot_cutoff`` a
     float).
+
+    Parameters
+    ----------
+    position : (4,) float, default: (0.0, 0.0, 1.0, 0.0)
+        Homogeneous ``GL_POSITION``: ``w = 0`` is a directional light shining from direction
+        ``(x, y, z)``; otherwise a point light at ``(x, y, z) / w``.
+    diffuse : (3,) or (4,) float, default: (1.0, 1.0, 1.0, 1.0)
+        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL.
+    specular : (3,) or (4,) float, default: (1.0, 1.0, 1.0, 1.0)
+        ``GL_SPECULAR``, as `diffuse`.
+    constant_attenuation : float, default: 1.0
+        k0 >= 0; attenuation is ``1 / (k0 + k1 d + k2 d^2)`` for positional lights.
+    linear_attenuation : float, default: 0.0
+        k1 >= 0.
+    quadratic_attenuation : float, default: 0.0
+        k2 >= 0.
+    spot_direction : (3,) float, default: (0.0, 0.0, -1.0)
+        ``GL_SPOT_DIRECTION``, any nonzero length.
+    spot_exponent : float, default: 0.0
+        ``GL_SPOT_EXPONENT`` >= 0.
+    spot_cutoff : float, default: 180.0
+        ``GL_SPOT_CUTOFF`` in degrees: in [0, 90], or 180 for no spot.
+    ambient : (3,) or (4,) float, default: (0.0, 0.0, 0.0, 1.0)
+        ``GL_AMBIENT``, as `diffuse`.
+
+    Raises
+    ------
+    ValueError
+        For a wrong shape (more than one value for a parameter) or a parameter outside GL's
+        range, naming it.
+    TypeError
+        For a non-numeric parameter.
 
     Examples
     --------
@@ -228,10 +285,16 @@ class Material:
 
     Parameters
     ----------
-    ambient, diffuse, specular, emission : (3,) or (4,) float
-        ``GL_AMBIENT``, ``GL_DIFFUSE``, ``GL_SPECULAR``, ``GL_EMISSION``; a missing alpha is 1.
-        Only the diffuse alpha reaches the output, as in GL.
-    shininess : float
+    ambient : (3,) or (4,) float, default: (0.2, 0.2, 0.2, 1.0)
+        ``GL_AMBIENT``; a missing alpha is 1.
+    diffuse : (3,) or (4,) float, default: (0.8, 0.8, 0.8, 1.0)
+        ``GL_DIFFUSE``; a missing alpha is 1. Only the diffuse alpha reaches the output, as in
+        GL.
+    specular : (3,) or (4,) float, default: (0.0, 0.0, 0.0, 1.0)
+        ``GL_SPECULAR``; a missing alpha is 1.
+    emission : (3,) or (4,) float, default: (0.0, 0.0, 0.0, 1.0)
+        ``GL_EMISSION``; a missing alpha is 1.
+    shininess : float, default: 0.0
         ``GL_SHININESS`` >= 0. GL limits it to 128; glshade accepts larger exponents too.
     """
 
@@ -283,21 +346,21 @@ class Scene:
         The front material (default: GL's).
     back_material : Material, optional
         The back material for two-sided lighting (default: the front material).
-    global_ambient : (3,) or (4,) float
+    global_ambient : (3,) or (4,) float, default: (0.2, 0.2, 0.2, 1.0)
         ``GL_LIGHT_MODEL_AMBIENT``.
-    viewer : (4,) float
+    viewer : (4,) float, default: (0.0, 0.0, 1.0, 0.0)
         The viewer, homogeneous: ``(0, 0, 1, 0)`` (default) is GL's infinite viewer,
         ``(0, 0, 0, 1)`` GL's local viewer at the eye, any ``(x, y, z, 1)`` a viewer at that point
         (learnopengl's ``viewPos``), any ``(x, y, z, 0)`` a viewer infinitely far that way.
-    two_side : bool
+    two_side : bool, default: False
         ``GL_LIGHT_MODEL_TWO_SIDE``: `shade` also returns the back colour, lit with the back
         material and the negated normal.
-    separate_specular : bool
+    separate_specular : bool, default: False
         ``GL_SEPARATE_SPECULAR_COLOR``: `shade` returns the specular sum as a secondary colour.
     specular : {"blinn", "phong"}
         GL's halfway vector ``(n . h)^s`` or the reflection vector ``(R . V)^s``.
-    specular_gate : bool
-        GL's ``f_i`` (eq. 2.2, default True): a light adds no specular unless ``n . VP > 0``.
+    specular_gate : bool, default: True
+        GL's ``f_i`` (eq. 2.2): a light adds no specular unless ``n . VP > 0``.
         False drops the gate, as learnopengl's shaders do: the specular term is added wherever
         its cosine is positive, even where ``n . VP <= 0`` (the diffuse term is still
         ``max(n . VP, 0)``). A zero normal or a light at the vertex still gives no specular.
@@ -412,6 +475,35 @@ class Scene:
         scene does not need (a zero colour, shininess 0, no attenuation, no spot cone, a
         directional light's constant direction and halfway vector) is left out, with the same
         results bit for bit.
+
+        Parameters
+        ----------
+        dtype : dtype-like
+            The computation dtype: float32 (float16 counts as float32) or float64.
+        modelview : (4, 4) float, optional
+            As for `shade`.
+        normalize : bool
+            As for `shade`.
+        rescale_normal : bool
+            As for `shade`.
+        color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+            As for `shade`; None (the default) plans a call without per-vertex colours.
+        color_material_face : {"front_and_back", "front", "back"}
+            As for `shade`.
+        accuracy : {"fast", "exact", "display"}
+            As for `shade`.
+        strict : bool
+            As for `shade`.
+
+        Returns
+        -------
+        str
+            The plan, one line.
+
+        Raises
+        ------
+        TypeError
+            For a dtype other than float16, float32 or float64.
 
         Examples
         --------

@@ -52,16 +52,17 @@ def shade(
         ``GL_RESCALE_NORMAL``: scale the transformed normals by M's rescale factor.
     colors : (..., 3) or (..., 4) array-like, optional
         Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1).
-    color_material : {"ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
-        The material parameter(s) the colours replace; default ``"ambient_and_diffuse"`` (GL's)
-        when `colors` is given.
-    color_material_face : {"front", "back", "front_and_back"}
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        The material parameter(s) the colours replace; None (the default) stands for
+        ``"ambient_and_diffuse"`` (GL's) when `colors` is given.
+    color_material_face : {"front_and_back", "front", "back"}
         The material(s) the colours replace (GL's default: both).
     accuracy : {"fast", "exact", "display"}
         ``"fast"`` (default) computes in the input's precision; ``"exact"`` computes in float64
         whatever the input and rounds the result once to its dtype; ``"display"`` computes in
         the input's precision with cheaper ``exp`` and ``ln``, every output within 2^-10 of the
-        exact value (a quarter of an 8-bit step). The README states the error bound of each.
+        exact value (a quarter of an 8-bit step). The documentation's Accuracy page
+        (docs/pages/guide/accuracy.md) states the error bound of each.
     strict : bool
         Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
     out : ndarray, optional
@@ -83,7 +84,8 @@ def shade(
 
     The computation runs in float32 when `positions` and `normals` are float32 (or float16)
     and in float64 otherwise (float64, integers, bools, Python sequences); any memory layout
-    is accepted (see the README's intake table). Vertices are shaded in parallel with the GIL
+    is accepted (see the intake table of the documentation's Arrays and dtypes page,
+    docs/pages/guide/arrays.md). Vertices are shaded in parallel with the GIL
     released; the result does not depend on the number of threads. Ctrl-C stops a long call
     within a fraction of a second; `out` then holds some rows shaded and others as they were.
 

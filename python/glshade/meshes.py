@@ -12,7 +12,20 @@ Mesh = tuple[NDArray[np.float64], NDArray[np.int64]]
 def icosphere(subdivisions: int) -> Mesh:
     """A unit sphere of 20 * 4**subdivisions triangles: an icosahedron whose faces are split in
     four, `subdivisions` times, with the new vertices pushed onto the sphere (trimesh's
-    ``creation.icosphere``). Faces are counter-clockwise seen from outside."""
+    ``creation.icosphere``). Faces are counter-clockwise seen from outside.
+
+    Parameters
+    ----------
+    subdivisions : int
+        How many times each face is split in four, >= 0 (0: the icosahedron).
+
+    Returns
+    -------
+    vertices : (n, 3) float64 ndarray
+        Points on the unit sphere.
+    faces : (20 * 4**subdivisions, 3) int64 ndarray
+        Vertex indices of each triangle.
+    """
     t = (1.0 + 5.0**0.5) / 2.0
     vertices = np.array(
         [
@@ -65,7 +78,26 @@ def icosphere(subdivisions: int) -> Mesh:
 def torus(rings: int, sides: int, major: float = 1.0, minor: float = 0.4) -> Mesh:
     """A torus around the z axis of 2 * rings * sides triangles: `rings` segments around the
     axis, `sides` around the tube, radii `major` and `minor`. Faces are counter-clockwise seen
-    from outside."""
+    from outside.
+
+    Parameters
+    ----------
+    rings : int
+        The number of segments around the z axis.
+    sides : int
+        The number of segments around the tube.
+    major : float
+        The distance from the z axis to the centre of the tube.
+    minor : float
+        The radius of the tube.
+
+    Returns
+    -------
+    vertices : (rings * sides, 3) float64 ndarray
+        The torus's points.
+    faces : (2 * rings * sides, 3) int64 ndarray
+        Vertex indices of each triangle.
+    """
     u = np.linspace(0.0, 2 * np.pi, rings, endpoint=False)
     v = np.linspace(0.0, 2 * np.pi, sides, endpoint=False)
     uu, vv = np.meshgrid(u, v, indexing="ij")
@@ -86,7 +118,22 @@ def torus(rings: int, sides: int, major: float = 1.0, minor: float = 0.4) -> Mes
 
 def grid(faces: int, seed: int = 0) -> Mesh:
     """A bumpy, jittered height-field mesh over the unit square: the first `faces` triangles of a
-    k x k grid of quads (k = ceil(sqrt(faces / 2))), vertices jittered by a seeded generator."""
+    k x k grid of quads (k = ceil(sqrt(faces / 2))), vertices jittered by a seeded generator.
+
+    Parameters
+    ----------
+    faces : int
+        The number of triangles.
+    seed : int
+        The seed of the generator that jitters the vertices: one seed, one mesh.
+
+    Returns
+    -------
+    vertices : ((k + 1)**2, 3) float64 ndarray
+        The grid's points, jittered.
+    faces : (faces, 3) int64 ndarray
+        Vertex indices of each triangle.
+    """
     k = int(np.ceil(np.sqrt(faces / 2)))
     rng = np.random.default_rng(seed)
     x, y = np.meshgrid(np.linspace(0, 1, k + 1), np.linspace(0, 1, k + 1))

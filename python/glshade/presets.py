@@ -58,7 +58,22 @@ class Preset(ValueRecord):
         object.__setattr__(self, "shade_kwargs", MappingProxyType(dict(self.shade_kwargs)))
 
     def shade(self, positions: ArrayLike, normals: ArrayLike, **extra: Any) -> FloatArray:
-        """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``."""
+        """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``.
+
+        Parameters
+        ----------
+        positions : (..., 3) array-like
+            As for `shade`.
+        normals : (..., 3) array-like
+            As for `shade`.
+        **extra
+            Further `shade` keywords; they override the preset's `shade_kwargs`.
+
+        Returns
+        -------
+        (..., 4) or (k, ..., 4) ndarray
+            As `shade` returns it.
+        """
         return shade(positions, normals, self.scene, **{**self.shade_kwargs, **extra})
 
     def shade_mesh(
@@ -70,7 +85,26 @@ class Preset(ValueRecord):
         weighting: Weighting = "angle",
         **extra: Any,
     ) -> FloatArray:
-        """`shade_mesh` with this model: per vertex (smooth) or per face (flat)."""
+        """`shade_mesh` with this model: per vertex (smooth) or per face (flat).
+
+        Parameters
+        ----------
+        vertices : (n, 3) float32 or float64, or a mesh
+            As for `shade_mesh`.
+        faces : (m, 3) int, optional
+            As for `shade_mesh`.
+        per : {"vertex", "face"}
+            As for `shade_mesh`.
+        weighting : {"angle", "area", "uniform"}
+            As for `shade_mesh`.
+        **extra
+            Further `shade` keywords; they override the preset's `shade_kwargs`.
+
+        Returns
+        -------
+        (n, 4) or (m, 4) ndarray, or (k, n, 4) / (k, m, 4) for scenes with several outputs
+            As `shade_mesh` returns it.
+        """
         kwargs = {**self.shade_kwargs, **extra}
         return shade_mesh(vertices, faces, scene=self.scene, per=per, weighting=weighting, **kwargs)
 
@@ -111,7 +145,7 @@ def opengl(
     material : Material, optional
         e_cm, a_cm, d_cm, s_cm, s_rm (default: GL's).
     global_ambient : (3,) or (4,) float
-        a_cs, ``GL_LIGHT_MODEL_AMBIENT``.
+        a_cs, ``GL_LIGHT_MODEL_AMBIENT`` (GL's default).
     local_viewer : bool
         v_bs, ``GL_LIGHT_MODEL_LOCAL_VIEWER``: h = VP + VP_e (viewer at the eye) instead of
         VP + (0, 0, 1).
@@ -150,10 +184,18 @@ def directx11(
 
     Parameters
     ----------
-    l_a, l_d, l_s : (3,) or (4,) float
-        The light's ambient, diffuse and specular colours.
-    m_a, m_d, m_s : (3,) or (4,) float
-        The material's; the output alpha is m_d's (1 for an RGB m_d).
+    l_a : (3,) or (4,) float
+        The light's ambient colour.
+    l_d : (3,) or (4,) float
+        The light's diffuse colour.
+    l_s : (3,) or (4,) float
+        The light's specular colour.
+    m_a : (3,) or (4,) float
+        The material's ambient colour.
+    m_d : (3,) or (4,) float
+        The material's diffuse colour; the output alpha is m_d's (1 for an RGB m_d).
+    m_s : (3,) or (4,) float
+        The material's specular colour.
     p : float
         The specular exponent, >= 0.
     eye_position : (3,) float
@@ -245,13 +287,18 @@ def learnopengl(
 
     Parameters
     ----------
-    light_pos, view_pos : (3,) float
-        ``lightPos`` and ``viewPos``, world space. The defaults are the tutorial's
-        (``lightPos(1.2, 1.0, 2.0)``, the camera at (0, 0, 3)).
-    light_color, object_color : (3,) float
-        ``lightColor`` and ``objectColor``; defaults the tutorial's (1, 1, 1) and (1, 0.5, 0.31).
-    ambient_strength, specular_strength : float
-        ``ambientStrength`` (0.1) and ``specularStrength`` (0.5).
+    light_pos : (3,) float
+        ``lightPos``, world space. The default is the tutorial's ``lightPos(1.2, 1.0, 2.0)``.
+    view_pos : (3,) float
+        ``viewPos``, world space. The default is the tutorial's camera, at (0, 0, 3).
+    light_color : (3,) float
+        ``lightColor``; the default is the tutorial's (1, 1, 1).
+    object_color : (3,) float
+        ``objectColor``; the default is the tutorial's (1, 0.5, 0.31).
+    ambient_strength : float
+        ``ambientStrength``; the default is the tutorial's 0.1.
+    specular_strength : float
+        ``specularStrength``; the default is the tutorial's 0.5.
     shininess : float
         The exponent the shader writes as 32, >= 0.
     model : (4, 4) float, optional
@@ -340,8 +387,12 @@ def phong_illumination(
 
     Parameters
     ----------
-    k_a, k_d, k_s : float
-        The ambient, diffuse and specular reflection coefficients (scalars), >= 0.
+    k_a : float
+        The ambient reflection coefficient (a scalar), >= 0.
+    k_d : float
+        The diffuse reflection coefficient (a scalar), >= 0.
+    k_s : float
+        The specular reflection coefficient (a scalar), >= 0.
     n : float
         The glossiness exponent, >= 0.
     I_a : float or (3,) float
@@ -362,9 +413,10 @@ def phong_illumination(
         gets ``(V_obj . V_light)^a_l``, V_obj the unit vector from the light to the point;
         outside it gets 0. Default: no angular attenuation.
     spot_cutoff : float or (L,) float, optional
-        θ_l, the cone's half-angle in degrees, in [0, 90] (default 90).
+        θ_l, the cone's half-angle in degrees, in [0, 90]; None (the default) is 90. Needs
+        `spot_direction`.
     spot_exponent : float or (L,) float, optional
-        a_l, >= 0 (default 0).
+        a_l, >= 0; None (the default) is 0. Needs `spot_direction`.
 
     Returns
     -------

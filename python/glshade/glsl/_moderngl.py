@@ -100,9 +100,24 @@ def shade(
 
     Parameters
     ----------
-    positions, normals, scene, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face
-        As for `gs.shade` (arrays broadcast; uint8 colours are scaled by 1/255).
+    positions : (..., 3) array-like
+        As for `gs.shade` (arrays broadcast).
+    normals : (..., 3) array-like
+        As for `gs.shade`.
+    scene : Scene
+        As for `gs.shade`.
+    modelview : (4, 4) float, optional
+        As for `gs.shade`.
+    normalize : bool
+        As for `gs.shade`.
+    rescale_normal : bool
+        As for `gs.shade`.
+    colors : (..., 3) or (..., 4) array-like, optional
+        As for `gs.shade`; uint8 colours are scaled by 1/255.
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `gs.shade`.
+    color_material_face : {"front_and_back", "front", "back"}
+        As for `gs.shade`.
     context : moderngl.Context, optional
         Default: `context()`.
 
@@ -158,6 +173,8 @@ class Targets(ValueRecord):
     """Float32 images of `rasterize`, row 0 at the top: pixel (row r, column c) has its centre
     at window coordinates (c + 0.5, height - r - 0.5).
 
+    Attributes
+    ----------
     color : (height, width, 4)
         GL's colour sum (what `gs.render` returns); the background where nothing is drawn.
     primary, secondary : (height, width, 4)
@@ -208,19 +225,32 @@ def rasterize(
 
     Parameters
     ----------
-    positions, normals : (n, 3) float
-        Eye-space vertex positions and normals (rounded to float32).
+    positions : (n, 3) float
+        Eye-space vertex positions (rounded to float32).
+    normals : (n, 3) float
+        Eye-space vertex normals (rounded to float32).
     faces : (m, 3) int
         Vertex indices; counter-clockwise in window space is front-facing.
     projection : (4, 4) float
         Row-major: clip = projection @ (position, 1).
-    width, height : int
-        The viewport, in pixels.
+    width : int
+        The viewport's width, in pixels.
+    height : int
+        The viewport's height, in pixels.
     scene : Scene
         Lights and viewer in eye coordinates.
-    shading, normalize, colors, color_material, color_material_face
+    shading : {"phong", "gouraud", "flat"}
+        As for `raster_shaders` and `gs.render`.
+    normalize : bool
         As for `raster_shaders` and `gs.render` (normals already in eye space: a rescale
         factor belongs in them).
+    colors : (n, 3) or (n, 4) float, optional
+        Per-vertex colours for `color_material`, used as given (rounded to float32; unlike
+        `gs.render`, uint8 colours are not scaled).
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `raster_shaders` and `gs.render`.
+    color_material_face : {"front_and_back", "front", "back"}
+        As for `raster_shaders` and `gs.render`.
     cull : {None, "back", "front", "front_and_back"}
         Which windings to discard.
     background : (3,) or (4,) float
@@ -320,8 +350,41 @@ def render(
 
     Parameters
     ----------
-    vertices, faces, scene, camera, width, height, shading, normals, colors, color_material,
-    color_material_face, model, normalize, rescale_normal, cull, background, lights_in, depth
+    vertices : (n, 3) float, or a mesh
+        As for `gs.render`.
+    faces : (m, 3) int, optional
+        As for `gs.render`.
+    scene : Scene
+        As for `gs.render`.
+    camera : Camera
+        As for `gs.render`.
+    width : int
+        As for `gs.render`.
+    height : int
+        As for `gs.render`.
+    shading : {"phong", "gouraud", "flat"}
+        As for `gs.render`.
+    normals : (n, 3) or (m, 3) float, optional
+        As for `gs.render`.
+    colors : (n, 3) or (n, 4) float or uint8, optional, or False
+        As for `gs.render`.
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `gs.render`.
+    color_material_face : {"front_and_back", "front", "back"}
+        As for `gs.render`.
+    model : (4, 4) float, optional
+        As for `gs.render`.
+    normalize : bool
+        As for `gs.render`.
+    rescale_normal : bool
+        As for `gs.render`.
+    cull : {None, "back", "front", "front_and_back"}
+        As for `gs.render`.
+    background : (3,) or (4,) float
+        As for `gs.render`.
+    lights_in : {"eye", "world"}
+        As for `gs.render`.
+    depth : bool
         As for `gs.render`.
     context : moderngl.Context, optional
         Default: `context()`.

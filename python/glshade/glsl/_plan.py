@@ -26,7 +26,28 @@ COLOR_MATERIAL_FACES = {"front": (0,), "back": (1,), "front_and_back": (0, 1)}
 
 @dataclass(frozen=True)
 class LightGroup:
-    """Lights that need the same terms (one GLSL loop); `indices` in summation order."""
+    """Lights that need the same terms (one GLSL loop); `indices` in summation order.
+
+    Attributes
+    ----------
+    directional : bool
+        The lights are directional (``w = 0``): VP and the spot factor are per-light constants.
+    ambient : bool
+        Their ambient colour is nonzero: the ambient term is computed.
+    diffuse : bool
+        Their diffuse colour is nonzero: the diffuse term is computed.
+    specular : bool
+        Their specular colour is nonzero and a side has a specular term: it is computed.
+    attenuated : bool
+        Positional lights whose (k0, k1, k2) is not (1, 0, 0): attenuation is computed.
+    spot : bool
+        Their cutoff is not 180: the spot cone is computed.
+    halfway : bool
+        The halfway vector is a per-light constant (directional lights, an infinite viewer,
+        Blinn's specular), bound as a uniform rather than computed per vertex.
+    indices : tuple of int
+        The lights of the group, as indices into ``scene.lights``, in summation order.
+    """
 
     directional: bool
     ambient: bool
@@ -46,7 +67,20 @@ class LightGroup:
 @dataclass(frozen=True)
 class Side:
     """What one side (0 front, 1 back) computes, and which material parameters the vertex
-    colour replaces there (GL_COLOR_MATERIAL)."""
+    colour replaces there (GL_COLOR_MATERIAL).
+
+    Attributes
+    ----------
+    specular : bool
+        The side has a specular term: its material's specular colour is nonzero, or the vertex
+        colour replaces it.
+    power : bool
+        The specular term raises to the shininess (it is not 0, where 0^0 = 1).
+    tracked : frozenset of str
+        The material parameters the vertex colour replaces on this side: some of
+        ``"ambient"``, ``"diffuse"``, ``"specular"`` and ``"emission"``; empty without colour
+        material.
+    """
 
     specular: bool
     power: bool
@@ -55,7 +89,37 @@ class Side:
 
 @dataclass(frozen=True)
 class Plan:
-    """Everything that chooses code; the values to bind come from `uniforms.values`."""
+    """Everything that chooses code; the values to bind come from `uniforms.values`.
+
+    Attributes
+    ----------
+    groups : tuple of LightGroup
+        The lights by the terms they need; a light that adds nothing (zero ambient and
+        diffuse colours, no specular term) is in none.
+    sides : tuple of Side
+        The front side and, with two-sided lighting, the back.
+    positions : bool
+        Vertex positions are read: a positional light or a viewer that is not infinite.
+    view : bool
+        The direction to a viewer at a point is computed per vertex (for a specular power).
+    viewer_direction : bool
+        An infinite viewer's direction is needed (for a specular power whose halfway vector is
+        not a per-light constant).
+    separate_specular : bool
+        ``scene.separate_specular``.
+    phong : bool
+        The reflection vector (``specular="phong"``) instead of Blinn's halfway vector.
+    gate : bool
+        ``scene.specular_gate``, GL's ``f_i``.
+    modelview : (4, 4) float64 ndarray or None
+        The modelview matrix the shaders apply, or None for eye-space input.
+    normalize : bool
+        ``GL_NORMALIZE``.
+    rescale_normal : bool
+        ``GL_RESCALE_NORMAL``.
+    color_material : str or None
+        The ``color_material`` mode, or None without vertex colours.
+    """
 
     groups: tuple[LightGroup, ...]
     sides: tuple[Side, ...]

@@ -87,7 +87,14 @@ class Shaders(ValueRecord):
 
     def bind(self, program: Any) -> None:
         """Writes `uniforms` into a moderngl program (matrices transposed for GL); names the
-        GLSL compiler removed as unused are skipped."""
+        GLSL compiler removed as unused are skipped.
+
+        Parameters
+        ----------
+        program : moderngl.Program or moderngl.ComputeShader
+            A program built from these sources (`sources`); anything whose
+            ``get(name, None)`` returns an object with ``write(bytes)`` will do.
+        """
         for name, value in self.uniforms.items():
             member = program.get(name, None)
             if member is not None:
@@ -138,8 +145,17 @@ def compute_shader(
     ----------
     scene : Scene
         Lights, materials and light model.
-    modelview, normalize, rescale_normal, color_material, color_material_face
-        As for `gs.shade`; `color_material` (None: off) means vertex colours are bound.
+    modelview : (4, 4) float, optional
+        As for `gs.shade`.
+    normalize : bool
+        As for `gs.shade`.
+    rescale_normal : bool
+        As for `gs.shade`.
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `gs.shade`; None (the default) is off, any other value means vertex colours are
+        bound.
+    color_material_face : {"front_and_back", "front", "back"}
+        As for `gs.shade`.
 
     Returns
     -------
@@ -197,7 +213,12 @@ def raster_shaders(
         agreement with `gs.render`).
     normalize : bool
         GL_NORMALIZE wherever the equation is evaluated (on by default, as in `gs.render`).
-    rescale_normal, color_material, color_material_face
+    rescale_normal : bool
+        As for `gs.shade`.
+    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
+        As for `gs.shade`; None (the default) is off, any other value means vertex colours are
+        bound.
+    color_material_face : {"front_and_back", "front", "back"}
         As for `gs.shade`.
 
     Returns

@@ -43,7 +43,19 @@ _MICROARCHITECTURES = (
 
 def identity(fields: dict[str, str]) -> str:
     """`vendor family F model M`, with the microarchitecture where `_MICROARCHITECTURES` knows
-    it; empty where /proc/cpuinfo gives no numbers."""
+    it; empty where /proc/cpuinfo gives no numbers.
+
+    Parameters
+    ----------
+    fields : dict of str to str
+        The fields of one processor in /proc/cpuinfo, by name (``vendor_id``, ``cpu family``,
+        ``model``; others are ignored).
+
+    Returns
+    -------
+    str
+        For example ``"AuthenticAMD family 25 model 17: Zen 4"``, or ``""``.
+    """
     vendor, family, model = (fields.get(k, "") for k in ("vendor_id", "cpu family", "model"))
     if not (family.isdigit() and model.isdigit()):
         return ""
@@ -105,7 +117,19 @@ def machine() -> dict[str, Any]:
 
 
 def describe(m: dict[str, Any]) -> str:
-    """One line of `machine`'s fields, for a printout."""
+    """One line of `machine`'s fields, for a printout.
+
+    Parameters
+    ----------
+    m : dict
+        A dict as `machine` returns it.
+
+    Returns
+    -------
+    str
+        The CPU and its flags, the usable CPUs, glshade's version, instruction set and threads,
+        numpy's and Python's versions, and the date.
+    """
     return (
         f"{m['cpu']} ({', '.join(m['cpu_flags']) or 'flags unknown'}), {m['usable_cpus']} of "
         f"{m['logical_cpus']} CPUs usable, glshade {m['glshade']} ({m['instruction_set']}, "

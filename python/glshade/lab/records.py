@@ -37,6 +37,40 @@ class Row:
     (`report_compare`). ``time_ns`` is the median ns per vertex with the fastest and slowest
     round as its spread (``time_low_ns``, ``time_high_ns``): seconds, as the machine ran
     then. ``kernel_ns`` (and its spread) is the kernel's ns per vertex in the row's rounds.
+
+    Attributes
+    ----------
+    scene : str
+        The scene class's name.
+    kind : str
+        ``"typical"`` or ``"stiff"``.
+    dtype : str
+        ``"float32"`` or ``"float64"``.
+    accuracy : str
+        The accuracy mode: ``"fast"``, ``"exact"`` or ``"display"``.
+    isa : str
+        The instruction set the row ran with (``"avx512"``, ``"avx2"`` or ``"baseline"``).
+    vertices : int
+        The vertices shaded per call.
+    max_error, mean_error, p999_error : float
+        The largest, mean and 99.9th-percentile absolute error.
+    max_ulps, mean_ulps, p999_ulps : float
+        The same errors in ulps of the dtype at the reference's value.
+    bound : float
+        The mode's bound on unit normals and colours in [0, 1].
+    max_error_over_bound : float
+        The largest error over its channel's own bound, the ``flipped`` vertices left out.
+    flipped : int
+        The vertices within `bounds.EDGE` of a discontinuity that land on its other side.
+    time_ns, time_low_ns, time_high_ns : float
+        Nanoseconds per vertex: the median round, the fastest and the slowest.
+    time_over_kernel, time_over_kernel_low, time_over_kernel_high : float
+        The time per vertex over the kernel's: the median of the per-round ratios, the
+        smallest and the largest.
+    kernel_ns, kernel_low_ns, kernel_high_ns : float
+        The kernel's nanoseconds per vertex in the row's rounds: median, fastest, slowest.
+    rounds : int
+        The number of timed rounds.
     """
 
     scene: str
@@ -89,7 +123,18 @@ class ReportData:
     def to_json(self, indent: int | None = 2) -> str:
         """Everything as JSON, in the schema of ``report.schema.json`` beside this module:
         ``schema``, ``machine``, ``settings``, ``rows`` and ``studies``; infinities as
-        ``null``."""
+        ``null``.
+
+        Parameters
+        ----------
+        indent : int, optional
+            As for `json.dumps`: spaces per level; None writes one line.
+
+        Returns
+        -------
+        str
+            The JSON text.
+        """
 
         def finite(x: Any) -> Any:
             if isinstance(x, float) and not np.isfinite(x):

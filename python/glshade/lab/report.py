@@ -57,7 +57,7 @@ REFERENCE = (
 # Lighting arithmetic through the same thread pool, a few ms a call like most rows: under
 # other people's load it slows as the rows do, which the streaming floor (memory and dispatch,
 # 0.1 ms) did not: per instruction set, ratios to it moved 0.55x to 1.46x between runs, to
-# this kernel 0.90x to 1.10x (README, "Error against run time").
+# this kernel 0.90x to 1.10x (the documentation's report page, docs/pages/guide/report.md).
 KERNEL = (
     "gs.shade of the benchmark's 8 mixed lights, float32, accuracy fast, on as many of the "
     "benchmark's vertices as settings.vertices, in the row's instruction set, timed in the "
@@ -87,7 +87,18 @@ class Report(ReportData):
 
     def write(self, directory: str | Path) -> list[Path]:
         """Writes report.md, report.json, report.csv and, with matplotlib, the figures (PNG and
-        SVG) into `directory` (made if missing); returns the paths written."""
+        SVG) into `directory` (made if missing); returns the paths written.
+
+        Parameters
+        ----------
+        directory : str or Path
+            Where to write the files.
+
+        Returns
+        -------
+        list of Path
+            The paths written.
+        """
         from .report_files import write
 
         return write(self, Path(directory))

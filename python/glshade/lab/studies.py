@@ -1,4 +1,5 @@
-"""Numerical studies behind the README's numbers; `gs.report` runs two of them.
+"""Numerical studies behind the documentation's numbers (the Area lights and Meshes and
+rendering pages, docs/pages/guide/area-lights.md and rendering.md); `gs.report` runs two of them.
 
 Each study is one self-contained function returning rows of plain numbers.
 """
@@ -119,6 +120,11 @@ def area_light_closed_form(
     ``4 atan(ab / (h sqrt(a^2 + b^2 + h^2))) / (4ab)`` for a 1 x 0.5 rectangle (a = 0.5,
     b = 0.25) and ``2 pi (1 - h / sqrt(R^2 + h^2)) / (pi R^2)`` for a disc of radius R = 0.6.
     The colour is 0.25 so that nothing clamps.
+
+    Parameters
+    ----------
+    ks : sequence of int
+        The numbers of point lights to sample each light with.
 
     Returns
     -------

@@ -51,7 +51,18 @@ class Timing:
         return max(self.seconds)
 
     def as_dict(self, scale: float = 1.0) -> dict[str, Any]:
-        """``median``, ``low``, ``high`` and ``rounds`` (the per-round times), times `scale`."""
+        """``median``, ``low``, ``high`` and ``rounds`` (the per-round times), times `scale`.
+
+        Parameters
+        ----------
+        scale : float
+            The factor every time is multiplied by (1e9 for nanoseconds).
+
+        Returns
+        -------
+        dict
+            ``median``, ``low`` and ``high`` (floats) and ``rounds`` (a list of floats).
+        """
         return {
             "median": self.median * scale,
             "low": self.low * scale,
@@ -176,7 +187,11 @@ def time_calibrated(
     ----------
     methods : mapping of str to (callable, callable)
         Per name: the call to time and its calibration kernel, each called with no arguments.
-    rounds, burst, on_round
+    rounds : int
+        As in `time_rounds`.
+    burst : int
+        As in `time_rounds`.
+    on_round : callable, optional
         As in `time_rounds`.
 
     Returns
@@ -192,5 +207,23 @@ def time_calibrated(
 
 
 def ratio(baseline: Timing, own: Timing) -> Timing:
-    """The per-round ratios baseline / own (a speed-up), as a Timing of ratios."""
+    """The per-round ratios baseline / own (a speed-up), as a Timing of ratios.
+
+    Parameters
+    ----------
+    baseline : Timing
+        The times to divide.
+    own : Timing
+        The times to divide by, round for round (as many rounds as `baseline`).
+
+    Returns
+    -------
+    Timing
+        One ratio per round, in round order.
+
+    Raises
+    ------
+    ValueError
+        When the two have different numbers of rounds.
+    """
     return Timing(tuple(b / o for b, o in zip(baseline.seconds, own.seconds, strict=True)))
