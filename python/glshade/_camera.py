@@ -9,7 +9,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import number, real, transform
+from ._intake import integer, number, real, transform
 from ._typing import Float64Array
 
 __all__ = ["Camera"]
@@ -111,16 +111,20 @@ class Camera:
 
         Parameters
         ----------
-        eye, target : (3,) float
-            The camera's position and the point it looks at, in world coordinates.
+        eye : (3,) float
+            The camera's position, in world coordinates.
+        target : (3,) float
+            The point it looks at, in world coordinates.
         up : (3,) float
             The world direction that appears upwards (any length, not parallel to the view).
         fovy : float
             The vertical field of view in degrees, in (0, 180).
         aspect : float, optional
             Width / height of the view; None (the default) takes the image's at render time.
-        near, far : float
-            Distances to the near and far clip planes, 0 < near < far.
+        near : float
+            The distance to the near clip plane, 0 < near < far.
+        far : float
+            The distance to the far clip plane.
 
         Returns
         -------
@@ -151,16 +155,22 @@ class Camera:
 
         Parameters
         ----------
-        eye, target, up : (3,) float
+        eye : (3,) float
+            As for `look_at`.
+        target : (3,) float
+            As for `look_at`.
+        up : (3,) float
             As for `look_at`.
         height : float
             The height of the visible box in world units; its width is ``height * aspect``,
             centred on the view axis.
         aspect : float, optional
             Width / height of the view; None (the default) takes the image's at render time.
-        near, far : float
-            Distances along the view direction to the near and far clip planes (``near != far``;
+        near : float
+            The distance along the view direction to the near clip plane (``near != far``;
             negative values are behind the eye, as in glOrtho).
+        far : float
+            The distance along the view direction to the far clip plane.
 
         Returns
         -------
@@ -179,13 +189,34 @@ class Camera:
 
     def projection_matrix(self, width: int, height: int) -> Float64Array:
         """The (4, 4) float64 projection for an image of `width` x `height` pixels (which sets
-        the aspect ratio of a camera built without one)."""
+        the aspect ratio of a camera built without one).
+
+        Parameters
+        ----------
+        width : int
+            The image's width in pixels.
+        height : int
+            The image's height in pixels.
+
+        Returns
+        -------
+        (4, 4) float64 ndarray
+            The camera's own matrix for a camera built from one; otherwise gluPerspective's or
+            glOrtho's, with the aspect ratio ``width / height`` unless the camera has its own.
+
+        Raises
+        ------
+        TypeError, ValueError
+            For a width or height that is not an integer from 1 to 16384.
+        """
+        w = integer(width, "width", 1, _glshade.MAX_SIZE)
+        h = integer(height, "height", 1, _glshade.MAX_SIZE)
         kind, *parameters = self._lens
         if kind == "projection":
             fixed: Float64Array = parameters[0]
             return fixed
         size, aspect, near, far = parameters
-        a = width / height if aspect is None else aspect
+        a = w / h if aspect is None else aspect
         if kind == "perspective":
             return _glshade.perspective(size, a, near, far)
         half_width = 0.5 * size * a

@@ -39,6 +39,12 @@ from support.boundary import SUN, UP
             ["height", "> 0", "0"],
         ),
         (lambda: gs.Camera.look_at_orthographic((0, 0, 5), height=-1), ValueError, ["height"]),
+        (
+            lambda: gs.Camera.look_at((0, 0, 5)).projection_matrix(64, 0),
+            ValueError,
+            ["height", "0"],
+        ),
+        (lambda: gs.Camera().projection_matrix(1.5, 64), TypeError, ["width", "1.5"]),
         (lambda: gs.shade(UP, UP, SUN, normalize="yes"), TypeError, ["normalize", "'yes'"]),
         (lambda: gs.shade(UP, UP, SUN, accuracy=1), TypeError, ["accuracy"]),
         (lambda: gs.shade(UP, UP, SUN, accuracy="best"), ValueError, ["accuracy", "best"]),
