@@ -5,8 +5,9 @@
 //! GL state as plain data, and writes RGBA rows. The optional `python` feature adds the binding.
 //!
 //! Conventions: right-handed eye coordinates, lights and viewer given in eye space, GL 2.1
-//! defaults (§2.14.1, every light's diffuse and specular white as for `GL_LIGHT0`: see the
-//! README's Defaults), colours clamped to [0, 1] once, at the end.
+//! defaults (§2.14.1, every light's diffuse and specular white as for `GL_LIGHT0`: see
+//! "Defaults" on the documentation's Shading arrays page, docs/pages/guide/shading.md), colours
+//! clamped to [0, 1] once, at the end.
 //!
 //! The API is what the crate root re-exports: the entry points [`shade`], [`shade_uninit`],
 //! [`describe`], [`face_normals`], [`vertex_normals`] and [`render`], the camera matrices

@@ -1,6 +1,6 @@
 """The one intake of every array argument of every public function.
 
-The rules (the README's table):
+The rules (the table of the documentation's Arrays and dtypes page, docs/pages/guide/arrays.md):
 
 - Anything numpy turns into an array is accepted: ndarrays of any byte order, alignment and
   memory order, lists, tuples, memoryviews, xarray and other array-likes.

@@ -32,7 +32,8 @@ pub struct Light {
 }
 
 impl Default for Light {
-    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white; README, Defaults).
+    /// GL's `GL_LIGHT0` defaults, for every light (diffuse and specular white; "Defaults" on the
+    /// documentation's Shading arrays page, docs/pages/guide/shading.md).
     fn default() -> Self {
         Self {
             position: [0.0, 0.0, 1.0, 0.0],

@@ -1,11 +1,12 @@
 """A float64 transcription of the OpenGL 2.1 lighting equation (section 2.14.1, eqs. 2.2-2.5).
 
 Written from the specification, term by term, as the test oracle: it shares no code with
-glshade. Where the spec says "undefined", it follows the README's conventions (for a
-shininess above 0, a zero halfway or reflection vector or a viewer at the vertex gives no
-specular, while a shininess of 0 gives 0^0 = 1 whatever they are; VP = 0 for a light at the
-vertex; cos(90 deg) is exactly 0). `specular_gate=False` replaces f_i by 1 (learnopengl's
-shaders). Lights and materials are plain dicts with GL's names.
+glshade. Where the spec says "undefined", it follows glshade's conventions, as the
+documentation's Conventions page (docs/pages/guide/conventions.md) states them (for a shininess
+above 0, a zero halfway or reflection vector or a viewer at the vertex gives no specular, while
+a shininess of 0 gives 0^0 = 1 whatever they are; VP = 0 for a light at the vertex; cos(90 deg)
+is exactly 0). `specular_gate=False` replaces f_i by 1 (learnopengl's shaders). Lights and
+materials are plain dicts with GL's names.
 """
 
 from __future__ import annotations

@@ -308,9 +308,10 @@ class Float32Tolerance:
     """Per vertex: may it be compared, and how far may two float32 evaluations be apart.
 
     bound : (n,)
-        ``tol * max(1, sum |terms|)`` (the README's float32 bound: 1e-5 for unit normals and
-        colours in [0, 1]) ``+ 16 u sum s tan(theta) |specular|`` (glshade's conditioning term,
-        README "Accuracy") ``+ 2 u sum s |specular|``: the evaluation GL implementations use,
+        ``tol * max(1, sum |terms|)`` (glshade's float32 bound: 1e-5 for unit normals and
+        colours in [0, 1]) ``+ 16 u sum s tan(theta) |specular|`` (glshade's conditioning term;
+        both on the documentation's Accuracy page, docs/pages/guide/accuracy.md)
+        ``+ 2 u sum s |specular|``: the evaluation GL implementations use,
         ``pow(n.h, s)`` of a float32 dot product rounded to about u, multiplies that rounding by
         the exponent s (measured on Mesa: at most 0.35 u s |specular| beyond the first term).
         Without `gl_pow` the first term alone.

@@ -4,9 +4,10 @@ high-precision oracle of the stiff cases, where a float64 transcription is not a
 
 Inputs are taken exactly as given (a float32 or float64 value widens exactly to mpf). Covers
 what the stiff cases use: directional and positional lights, attenuation, spots, infinite and
-local viewers, Blinn's halfway vector, GL's specular gate, `normalize`; the README's conventions
-where GL says "undefined" (0^0 = 1; no specular from a zero halfway vector; VP = 0 for a light
-at the vertex; cos 90 deg = 0).
+local viewers, Blinn's halfway vector, GL's specular gate, `normalize`; glshade's conventions
+where GL says "undefined", as the documentation's Conventions page
+(docs/pages/guide/conventions.md) states them (0^0 = 1; no specular from a zero halfway vector;
+VP = 0 for a light at the vertex; cos 90 deg = 0).
 """
 
 from __future__ import annotations

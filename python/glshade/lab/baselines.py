@@ -8,7 +8,8 @@ lights, and numba compiled with ``parallel=True`` (a ``prange`` over vertices, a
 read the scene through one light table (`light_table`, its columns named below) and normalise
 directional lights once, as glshade does; the tests check that both agree with `gs.shade`.
 
-The conventions are glshade's where GL says "undefined" (README): a light at the vertex gives
+The conventions are glshade's where GL says "undefined" (the documentation's Conventions page,
+docs/pages/guide/conventions.md): a light at the vertex gives
 VP = 0, a zero halfway vector no specular (0^0 = 1 for shininess 0), cos 90 deg = 0 exactly, an
 infinite weight times a zero colour nothing, and a non-finite input that is read makes its row
 NaN.

@@ -1,5 +1,5 @@
-"""The accuracy bounds of each mode, per channel, as the README's "Accuracy" states them: the
-one place the report and its tests read them.
+"""The accuracy bounds of each mode, per channel, as the documentation's Accuracy page
+(docs/pages/guide/accuracy.md) states them: the one place the report and its tests read them.
 
     bound = relative · max(1, Σ|terms|) + sensitivity · Σ (s·tanθ / min(1, |h|) + e·tanφ)·|term|
             + rounding
@@ -37,7 +37,7 @@ class Bound:
 
     @property
     def unit(self) -> float:
-        """The bound on unit normals and colours in [0, 1]: the README's table."""
+        """The bound on unit normals and colours in [0, 1]: the Accuracy page's table."""
         return self.relative + self.rounding
 
     def per_channel(self, magnitude: NDArray[Any], sensitivity: NDArray[Any]) -> NDArray[Any]:

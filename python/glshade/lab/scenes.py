@@ -1,5 +1,6 @@
 """The scenes the benchmarks time and the report measures: the benchmark's three typical scenes,
-and one class per row of the README's table of stiff cases (tests/core/accuracy/test_stiff.py),
+and one class per row of the table of stiff cases on the documentation's Accuracy page
+(docs/pages/guide/accuracy.md; tests/core/accuracy/test_stiff.py),
 each with the vertices that make it stiff."""
 
 from __future__ import annotations

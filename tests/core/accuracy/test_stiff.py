@@ -1,9 +1,10 @@
-"""The stiff and extreme cases of the README's table, each against the 50-digit mpmath oracle of
+"""The stiff and extreme cases of the table on the documentation's Accuracy page
+(docs/pages/guide/accuracy.md, "The stiff cases"), each against the 50-digit mpmath oracle of
 `mp_reference.py`, in both dtypes and both accuracy modes, with its bound written beside it.
 
 Every case checks the clamped output against the clamped oracle and has a variant whose colours
 keep the exact result inside (0, 1), so the unclamped value is compared too (`inside` counts
-them). The bounds are the README's ("Accuracy"), per channel:
+them). The bounds are those of the same page (its accuracy modes), per channel:
 
     fast, float64:   1e-12 * max(1, sum|terms|) + 16 u64 * sensitivity
     fast, float32:   1e-5  * max(1, sum|terms|) + 16 u32 * sensitivity
@@ -43,7 +44,7 @@ BLACK = {"ambient": (0, 0, 0), "diffuse": (0, 0, 0), "specular": (0, 0, 0)}
 
 
 def bound(dtype: type, accuracy: str, ref: MpVertex) -> float:
-    """The README's per-channel bound for one vertex."""
+    """The Accuracy page's per-channel bound for one vertex."""
     if accuracy == "display":
         return 2.0**-15 * max(1.0, ref.magnitude) + 2.0**-18 * ref.sensitivity
     if dtype is np.float32 and accuracy == "fast":

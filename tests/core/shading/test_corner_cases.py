@@ -1,5 +1,6 @@
 """The corner cases of GL 2.1 section 2.14.1, each term of
-the equation alone and combined, and the README's conventions where GL says "undefined".
+the equation alone and combined, and glshade's conventions where GL says "undefined" (the
+documentation's Conventions page, docs/pages/guide/conventions.md).
 
 Expected values are worked out by hand from the equation; where a case is easier to state as
 "equals the float64 transcription", the transcription in gl_reference.py is the oracle.

@@ -619,7 +619,8 @@ def test_area_lights_converge_to_the_analytic_irradiance(k: int, rel: float) -> 
     disc_error = irradiance_on_axis(disc, h) / (c * solid_angle / (np.pi * radius**2)) - 1
     assert abs(rect_error) < rel
     assert abs(disc_error) < max(rel, 1e-7)
-    # The README quotes these errors from the study; it computes the same numbers.
+    # The documentation's Area lights page (docs/pages/guide/area-lights.md) quotes these
+    # errors from the study; it computes the same numbers.
     [row] = area_light_closed_form([k])
     assert row["k"] == k
     assert row["rectangle"] == pytest.approx(rect_error, abs=1e-12)
