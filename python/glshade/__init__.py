@@ -14,8 +14,9 @@ from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
 from ._glshade import __version__
+from ._image import Image
 from ._normals import face_normals, vertex_normals
-from ._render import Image, render
+from ._render import render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 from ._shade_mesh import shade_mesh

@@ -8,9 +8,9 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._image import Image
 from ._intake import array, number
 from ._records import ValueRecord
-from ._render import Image
 from ._typing import Float64Array
 
 __all__ = ["Comparison", "compare"]

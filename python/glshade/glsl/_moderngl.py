@@ -10,9 +10,9 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from .._image import Image
 from .._intake import integer, rgba, rows, vertices
 from .._records import ValueRecord
-from .._render import Image
 from .._render_input import render_input
 from .._scene import Scene
 from .._typing import Cull, Face, Shading, Space
