@@ -5,10 +5,8 @@ Gouraud and Phong colours against `shade` evaluated at each pixel's ray hit."""
 from __future__ import annotations
 
 import os
-import struct
 import subprocess
 import sys
-import zlib
 from pathlib import Path
 from typing import Any
 
@@ -462,20 +460,6 @@ def test_the_image_saves_and_shows_itself(tmp_path: Path) -> None:
     assert type(image.max()) is np.float64 and type(image > 0) is np.ndarray
 
 
-def test_png_round_trip(tmp_path: Path) -> None:
-    image = np.random.default_rng(0).uniform(-0.5, 1.5, (5, 7, 4))
-    data = image.view(gs.Image).save(tmp_path / "x.png").read_bytes()
-    width, height = struct.unpack(">II", data[16:24])
-    assert (width, height) == (7, 5)
-    idat = data[data.index(b"IDAT") + 4 : data.index(b"IEND") - 8]
-    rows = np.frombuffer(zlib.decompress(idat), np.uint8).reshape(5, 1 + 7 * 4)
-    assert (rows[:, 0] == 0).all()
-    expected = np.round(np.clip(image, 0, 1) * 255).astype(np.uint8)
-    np.testing.assert_array_equal(rows[:, 1:].reshape(5, 7, 4), expected)
-    with pytest.raises(ValueError, match="height, width, 4"):
-        image[..., :3].view(gs.Image).save(tmp_path / "y.png")
-
-
 def test_camera_matrices_are_glus() -> None:
     camera = gs.Camera.look_at((1, 2, 3), (1, 2, -2), (0, 3, 0), fovy=90, near=1, far=11)
     np.testing.assert_allclose(
@@ -534,7 +518,7 @@ def test_bad_meshes_cameras_and_types() -> None:
     with pytest.raises(TypeError, match="faces must be an integer array"):
         gs.render(TRI, [[0.0, 1, 2]], SHINY, gs.Camera())
     with pytest.raises(TypeError, match=r"scene must be a glshade\.Scene"):
-        gs.render(TRI, [[0, 1, 2]], None, gs.Camera())  # type: ignore[arg-type]
+        gs.render(TRI, [[0, 1, 2]], "sun", gs.Camera())  # type: ignore[arg-type]
     with pytest.raises(TypeError, match=r"camera must be a glshade\.Camera"):
         gs.render(TRI, [[0, 1, 2]], SHINY, np.eye(4))  # type: ignore[arg-type]
     with pytest.raises(ValueError, match="view must be affine"):
