@@ -2,16 +2,22 @@
 
 from __future__ import annotations
 
+import base64
+import html
 from dataclasses import dataclass, field
-from typing import Any, Literal
+from typing import TYPE_CHECKING, Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._image import Image
-from ._intake import array, number
+from ._intake import array, number, one_of
+from ._png import encode_png
 from ._records import ValueRecord
 from ._typing import Float64Array
+
+if TYPE_CHECKING:
+    from matplotlib.axes import Axes
 
 __all__ = ["Comparison", "compare"]
 
@@ -27,13 +33,28 @@ KINDS = (
     "coverage, interior",
     "coverage, edge",
 )
-# Heatmap colours of the kinds other than colour differences (RGB).
+# Heatmap colours of the kinds other than colour differences (RGB), with their names.
 _MARKS = {
     3: (0.2, 0.4, 1.0),
     4: (0.1, 0.2, 0.6),
     5: (0.0, 1.0, 1.0),
     6: (1.0, 0.0, 1.0),
 }
+_MARK_NAMES = {3: "blue", 4: "dark blue", 5: "cyan", 6: "magenta"}
+# The grey of agreement: this share of the reference's luminance (Rec. 709 weights).
+_DIM = 0.35
+_LUMINANCE = (0.2126, 0.7152, 0.0722)
+# Colour differences span the tolerance to 10**_DECADES times it on the heatmap's log scale.
+_DECADES = 3
+_ORANGE = (1.0, 0.5, 0.0)
+
+
+def _error_colours(t: NDArray[np.floating[Any]]) -> Float64Array:
+    """(..., 3) RGB of colour differences at `t` = log10(error / tolerance) / 3 in [0, 1]:
+    orange (1, 0.5, 0) at the tolerance, through salmon, to white (1, 1, 1) at 1000 times it."""
+    t = np.clip(np.asarray(t, np.float64), 0.0, 1.0)
+    rgb: Float64Array = np.stack([np.ones_like(t), 0.5 * (1 - t) + t * t, t * t], axis=-1)
+    return rgb
 
 
 @dataclass(frozen=True, eq=False)
@@ -56,8 +77,9 @@ class Comparison(ValueRecord):
         nothing is compared).
     labels : (height, width) uint8
         Each pixel's kind, an index into `KINDS`: "same"; "color" (both cover, colours differ
-        beyond the tolerance); "depth" (both cover, depths differ beyond `depth_tolerance`:
-        the images show different surfaces, a depth tie or an occlusion); "coverage" (one
+        beyond the tolerance); "depth" (both cover, depths differ beyond `compare`'s
+        ``depth_tolerance`` plus ``depth_shift`` times the local depth slope: the images show
+        different surfaces, a depth tie or an occlusion); "coverage" (one
         image covers the pixel, the other not); each split into "edge" (within `edge_width`
         pixels of a silhouette: a coverage boundary or a depth step in either image) and
         "interior".
@@ -67,10 +89,19 @@ class Comparison(ValueRecord):
         The largest differences, largest first: ``row``, ``column``, ``kind``, ``error`` (the
         largest channel's; 1 for coverage), ``image`` and ``reference`` (the pixel values).
     heatmap : Image
-        (height, width, 4) float32, opaque: the reference's luminance dimmed where the
-        images agree, colour differences from orange (the tolerance) to white (1000 times
-        it) on a log scale, depth differences blue, coverage differences cyan (interior) and
-        magenta (edge); transparent where neither covers. Shows itself in a notebook.
+        (height, width, 4) float32: grey where the images agree (0.35 times the reference's
+        luminance, Rec. 709 weights); colour differences from orange (1, 0.5, 0) at the
+        tolerance to white at 1000 times it, on a log scale of the largest channel's error
+        (G = 0.5 (1 - t) + t², B = t², t = log10(error / tolerance) / 3); depth differences
+        blue (0.2, 0.4, 1) in the interior, dark blue (0.1, 0.2, 0.6) on edges; coverage
+        differences cyan (interior) and magenta (edge); alpha 1 where either image covers,
+        0 where neither does.
+
+    Notes
+    -----
+    In a notebook a Comparison shows its heatmap beside its summary, with a legend of every
+    kind's colour and count and the colour differences' scale (``_repr_html_``, without
+    matplotlib); `plot` draws the same with matplotlib, with a colour bar.
     """
 
     tolerance: float
@@ -108,8 +139,179 @@ class Comparison(ValueRecord):
         return "\n".join(lines)
 
     def _repr_png_(self) -> bytes:
-        """The heatmap, in a notebook."""
-        return self.heatmap._repr_png_()
+        """The heatmap alone, for frontends that show PNG only."""
+        return encode_png(np.asarray(self.heatmap))
+
+    def _repr_html_(self) -> str:
+        """The heatmap beside the summary, a legend of the kinds with their colours and
+        counts, and the colour differences' scale, for a notebook; no matplotlib needed."""
+        height, width = self.labels.shape
+        # Small images drawn larger, their pixels kept square and sharp.
+        zoom = max(1, 256 // max(width, 1))
+        heatmap = base64.b64encode(self._repr_png_()).decode("ascii")
+        # The summary's first line; its second, the counts, is the table below; the largest
+        # differences' lines are long: folded, a click away.
+        head, _, *listed = str(self).splitlines()
+        summary = f"<div>{html.escape(head)}</div>"
+        text = html.escape("\n".join(listed))
+        largest = (
+            f'<details><summary>largest differences</summary><pre style="margin:0">{text}</pre>'
+            "</details>"
+            if listed
+            else ""
+        )
+        rows = "".join(
+            f'<tr><td><span style="display:inline-block;width:12px;height:12px;'
+            f'{_css_swatch(rgb)};border:1px solid #888"></span></td>'
+            f"<td>{html.escape(name)}</td><td style='text-align:right'>{count:,}</td>"
+            f"<td>{html.escape(meaning)}</td></tr>"
+            for rgb, name, count, meaning in _legend(self)
+        )
+        return (
+            '<div style="display:flex;flex-wrap:wrap;gap:16px;align-items:flex-start;'
+            'font-family:sans-serif;font-size:12px">'
+            f'<img src="data:image/png;base64,{heatmap}" width="{width * zoom}" '
+            f'alt="gs.compare heatmap, {height} x {width} pixels" '
+            'style="image-rendering:pixelated;max-width:100%">'
+            f"<div>{summary}{largest}"
+            f'<table style="font-size:inherit">{rows}</table>'
+            f"{_html_scale(self.tolerance)}</div></div>"
+        )
+
+    def plot(self, ax: Axes | None = None, *, legend: bool = True) -> Axes:
+        """Draws the heatmap with matplotlib, with a colour bar for the colour differences
+        (orange at the tolerance to white at 1000 times it, log scale) and a legend of every
+        kind's colour and count.
+
+        Parameters
+        ----------
+        ax : matplotlib.axes.Axes, optional
+            Where to draw; None (the default) makes a new pyplot figure.
+        legend : bool
+            Also draw the colour bar and the legend.
+
+        Returns
+        -------
+        matplotlib.axes.Axes
+            The axes drawn into.
+
+        Raises
+        ------
+        ImportError
+            Without matplotlib (``pip install 'glshade[plot]'``).
+
+        Examples
+        --------
+        >>> import numpy as np, glshade as gs
+        >>> a = np.zeros((4, 4, 4)); a[1:3, 1:3] = (0.5, 0.5, 0.5, 1)
+        >>> ax = gs.compare(a, a).plot()  # doctest: +SKIP
+        """
+        try:
+            from matplotlib.cm import ScalarMappable
+            from matplotlib.colors import ListedColormap, LogNorm
+            from matplotlib.patches import Patch
+        except ImportError:
+            raise ImportError(
+                "Comparison.plot needs matplotlib, which is not installed: "
+                "pip install 'glshade[plot]' (or show the comparison in a notebook, "
+                "or save comparison.heatmap)"
+            ) from None
+        if ax is None:
+            import matplotlib.pyplot as plt
+
+            _, ax = plt.subplots(figsize=(7, 5.5), layout="constrained")
+        ax.imshow(np.asarray(self.heatmap), interpolation="nearest")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title(
+            f"{self.within_tolerance:.2%} of {self.compared:,} pixels within {self.tolerance:g}"
+        )
+        if not legend:
+            return ax
+        figure = ax.get_figure()
+        assert figure is not None  # an Axes that has been drawn into belongs to a figure
+        if self.tolerance > 0:
+            cmap = ListedColormap(_error_colours(np.linspace(0, 1, 1024)), "glshade-compare")
+            norm = LogNorm(self.tolerance, self.tolerance * 10.0**_DECADES)
+            bar = figure.colorbar(ScalarMappable(norm, cmap), ax=ax, fraction=0.05, pad=0.02)
+            ticks = self.tolerance * 10.0 ** np.arange(_DECADES + 1)
+            bar.set_ticks(list(ticks), labels=[f"{t:.3g}" for t in ticks])
+            bar.ax.minorticks_off()
+            bar.set_label("colour difference (largest channel), log scale")
+        handles = [
+            Patch(
+                facecolor="none" if rgb is None else rgb,
+                edgecolor="0.5",
+                # The colour bar states the colour differences' colours.
+                label=f"{name} ({count:,})" + ("" if name.startswith("color") else f": {meaning}"),
+            )
+            for rgb, name, count, meaning in _legend(self)
+        ]
+        ax.legend(
+            handles=handles,
+            loc="upper left",
+            bbox_to_anchor=(0.0, -0.01),
+            frameon=False,
+            fontsize="small",
+        )
+        return ax
+
+
+def _legend(c: Comparison) -> list[tuple[tuple[float, float, float] | None, str, int, str]]:
+    """(colour or None for transparent, kind, pixels, what the colour means), as the heatmap
+    draws each kind."""
+    covered = np.asarray(c.heatmap)[..., 3] > 0
+    same = int(np.count_nonzero(covered & (c.labels == 0)))
+    top = c.tolerance * 10.0**_DECADES
+    colour = (
+        f"orange {_rgb_text(_ORANGE)} at the tolerance {c.tolerance:g} to white at "
+        f"{top:g}, log scale"
+        if c.tolerance > 0
+        else "white (tolerance 0)"
+    )
+    grey = (_DIM / 2,) * 3
+    rows: list[tuple[tuple[float, float, float] | None, str, int, str]] = [
+        (grey, "same", same, f"grey, {_DIM:g} x the reference's luminance"),
+        (_ORANGE, "color, interior", c.counts["color, interior"], colour),
+        (_ORANGE, "color, edge", c.counts["color, edge"], colour),
+    ]
+    for k, rgb in _MARKS.items():
+        rows.append((rgb, KINDS[k], c.counts[KINDS[k]], f"{_MARK_NAMES[k]} {_rgb_text(rgb)}"))
+    neither = int(np.count_nonzero(~covered))
+    rows.append((None, "neither covers", neither, "transparent"))
+    return rows
+
+
+def _rgb_text(rgb: tuple[float, float, float]) -> str:
+    return "(" + ", ".join(f"{v:g}" for v in rgb) + ")"
+
+
+def _css_swatch(rgb: tuple[float, float, float] | None) -> str:
+    if rgb is None:  # transparent: a chequer shows through
+        return "background:repeating-conic-gradient(#ccc 0 25%,#fff 0 50%) 0 0/6px 6px"
+    r, g, b = (round(255 * v) for v in rgb)
+    return f"background:rgb({r},{g},{b})"
+
+
+def _html_scale(tolerance: float) -> str:
+    """The colour differences' scale as HTML: a strip of the heatmap's own colours, 256 pixels
+    from the tolerance to 1000 times it, and its decades."""
+    if not tolerance > 0:
+        return "<div>tolerance 0: every colour difference is white</div>"
+    strip = np.ones((12, 256, 4))
+    strip[..., :3] = _error_colours(np.linspace(0, 1, 256))[None]
+    data = base64.b64encode(encode_png(strip)).decode("ascii")
+    ticks = "".join(
+        f'<span style="position:absolute;top:14px;left:{round(255 * k / _DECADES)}px;'
+        f'transform:translateX(-50%)">{tolerance * 10.0**k:.3g}</span>'
+        for k in range(_DECADES + 1)
+    )
+    return (
+        '<div style="margin-top:8px">colour difference (largest channel), log scale:</div>'
+        '<div style="position:relative;width:256px;height:30px;margin:2px 16px">'
+        f'<img src="data:image/png;base64,{data}" width="256" height="12" '
+        f'alt="colour scale" style="display:block">{ticks}</div>'
+    )
 
 
 def _as_float(value: ArrayLike, name: str) -> Float64Array:
@@ -122,10 +324,8 @@ def _as_float(value: ArrayLike, name: str) -> Float64Array:
     return result
 
 
-def _straight(a: Float64Array, alpha: str, name: str) -> Float64Array:
-    if alpha not in ("straight", "premultiplied"):
-        raise ValueError(f"{name} must be 'straight' or 'premultiplied', got {alpha!r}")
-    if alpha == "straight" or a.shape[2] == 3:
+def _straight(a: Float64Array, alpha: object, name: str) -> Float64Array:
+    if one_of(alpha, name, ("straight", "premultiplied")) == "straight" or a.shape[2] == 3:
         return a
     out = a.copy()
     w = a[..., 3:]
@@ -174,6 +374,36 @@ def _dilate(mask: NDArray[np.bool_], width: int) -> NDArray[np.bool_]:
     return out
 
 
+def _depth_slope(depth: Float64Array, covered: NDArray[np.bool_], jump: float) -> Float64Array:
+    """Per pixel, the largest change of depth per pixel along the row, the column or a
+    diagonal through it: the central difference |d(p + e) - d(p - e)| / 2, which leaves out
+    the pixel's own depth, where both neighbours are covered and it is within `jump`; else
+    the larger one-sided step |d(p ± e) - d(p)| within `jump` (beside a silhouette or the
+    image's border); for a diagonal with neither, the row's change plus the column's; 0
+    where nothing is left. On a plane of gradient (gx, gy) that is |gx| + |gy|. One pixel of
+    another surface inside a surface does not widen its own tolerance, and a patch of it by
+    half its depth difference at most."""
+    h, w = depth.shape
+    d = np.pad(np.where(covered, depth, np.nan), 1, constant_values=np.nan)
+    centre = d[1:-1, 1:-1]
+    changes: list[Float64Array] = []
+    with np.errstate(invalid="ignore"):
+        for a, b in ((0, 1), (1, 0), (1, 1), (1, -1)):
+            ahead = d[1 + a : 1 + a + h, 1 + b : 1 + b + w]
+            behind = d[1 - a : 1 - a + h, 1 - b : 1 - b + w]
+            central = np.abs(ahead - behind) / 2
+            # NaN (a neighbour not covered) compares False: it is left out.
+            steps = [np.abs(x - centre) for x in (ahead, behind)]
+            one_sided = np.fmax(*(np.where(x <= jump, x, np.nan) for x in steps))
+            change = np.where(central <= jump, central, one_sided)
+            if a == 1 and b != 0:  # a diagonal
+                along = np.nan_to_num(changes[0]) + np.nan_to_num(changes[1])
+                change = np.where(np.isnan(change), along, change)
+            changes.append(change)
+    slope: Float64Array = np.nan_to_num(np.fmax.reduce(changes))
+    return slope
+
+
 def compare(
     image: ArrayLike,
     reference: ArrayLike,
@@ -183,6 +413,7 @@ def compare(
     reference_depth: ArrayLike | None = None,
     depth_tolerance: float = 1e-5,
     depth_jump: float = 1e-2,
+    depth_shift: float = 1.0,
     alpha: Alpha = "straight",
     reference_alpha: Alpha | None = None,
     edge_width: int = 1,
@@ -204,14 +435,31 @@ def compare(
         Per channel: a larger difference counts.
     depth, reference_depth : (height, width) float, optional
         Window depths in [0, 1] (1 where nothing is drawn): coverage from them, and pixels
-        where they differ beyond `depth_tolerance` are told apart as depth differences.
+        where they differ beyond `depth_tolerance` and `depth_shift`'s allowance are told
+        apart as depth differences.
     depth_tolerance : float
-        The depth difference that counts.
+        The depth difference that counts where the depth is flat; it grows with the depth's
+        slope (see `depth_shift`).
     depth_jump : float
         A depth step between neighbours that counts as a silhouette (an inner edge).
+    depth_shift : float
+        The misregistration, in pixels along each axis, that depth differences are forgiven:
+        the depths differ at a pixel when ``|depth - reference_depth| > depth_tolerance +
+        depth_shift * slope``, slope the larger of the two images' largest change of depth
+        per pixel along the row, the column or a diagonal through the pixel (central
+        differences over covered neighbours, changes above `depth_jump` left out). Why: on a
+        plane of gradient (gx, gy) per pixel these changes are |gx|, |gy| and |gx ± gy|, the
+        largest |gx| + |gy|, and moving the geometry by (sx, sy) pixels, |sx|, |sy| <= s,
+        moves a pixel's depth by |gx sx + gy sy| <= s (|gx| + |gy|). The default, 1,
+        forgives any shift of up to a pixel, so half a pixel (a camera moved by half a
+        pixel, another rasteriser's sample positions) with a factor 2 to spare for the
+        surface's curvature. Another surface is still told apart: one pixel of it inside a
+        surface whose depth differs by more than the slope (central differences leave the
+        pixel's own depth out), a larger patch by more than twice the slope.
+        0: the fixed `depth_tolerance` alone.
     alpha : {"straight", "premultiplied"}
         How `image` stores colour under alpha; premultiplied colours are divided by alpha (0
-        where it is 0).
+        where it is 0). Case-insensitive, as `reference_alpha`.
     reference_alpha : {None, "straight", "premultiplied"}
         How `reference` stores colour under alpha; None (the default) takes `alpha`.
     edge_width : int
@@ -250,6 +498,18 @@ def compare(
         raise ValueError(f"tolerance must be >= 0, got {tol}")
     if isinstance(edge_width, bool) or not isinstance(edge_width, int) or edge_width < 0:
         raise ValueError(f"edge_width must be an integer >= 0, got {edge_width!r}")
+    depth_tol, jump, shift = (
+        number(depth_tolerance, "depth_tolerance"),
+        number(depth_jump, "depth_jump"),
+        number(depth_shift, "depth_shift"),
+    )
+    for name, value in (
+        ("depth_tolerance", depth_tol),
+        ("depth_jump", jump),
+        ("depth_shift", shift),
+    ):
+        if not 0 <= value < np.inf:
+            raise ValueError(f"{name} must be a finite number >= 0, got {value}")
     shape = a.shape[:2]
     da = _depth(depth, shape, "depth")
     dr = _depth(reference_depth, shape, "reference_depth")
@@ -266,7 +526,7 @@ def compare(
     silhouette = _neighbours_differ(ca) | _neighbours_differ(cr)
     for d, c in ((da, ca), (dr, cr)):
         if d is not None:
-            silhouette |= _depth_steps(d, c, number(depth_jump, "depth_jump"))
+            silhouette |= _depth_steps(d, c, jump)
     edge = _dilate(silhouette, edge_width) if edge_width else silhouette
     both = ca & cr
     error = np.abs(a - r)
@@ -274,7 +534,8 @@ def compare(
     labels = np.zeros(shape, np.uint8)
     labels[both & (worst > tol)] = 1
     if da is not None and dr is not None:
-        labels[both & (np.abs(da - dr) > number(depth_tolerance, "depth_tolerance"))] = 3
+        slope = np.maximum(_depth_slope(da, ca, jump), _depth_slope(dr, cr, jump))
+        labels[both & (np.abs(da - dr) > depth_tol + shift * slope)] = 3
     labels[ca != cr] = 5
     labels[(labels > 0) & edge] += 1
     counts = {kind: int(np.count_nonzero(labels == k)) for k, kind in enumerate(KINDS) if k}
@@ -324,15 +585,18 @@ def _heatmap(
     tol: float,
 ) -> Image:
     out = np.zeros((*labels.shape, 4), np.float32)
-    luminance = reference[..., :3] @ np.array([0.2126, 0.7152, 0.0722])
-    out[..., :3] = (0.35 * luminance)[..., None]
+    luminance = reference[..., :3] @ np.array(_LUMINANCE)
+    out[..., :3] = (_DIM * luminance)[..., None]
     colour = (labels == 1) | (labels == 2)
-    # log10(error / tol) over [0, 3] from orange through red to white.
-    t = np.clip(np.log10(np.maximum(worst, tol) / max(tol, 1e-300)) / 3, 0, 1)[colour]
-    out[colour, 0] = 1.0
-    out[colour, 1] = 0.5 * (1 - t) + t * t
-    out[colour, 2] = t * t
+    out[colour, :3] = _error_colours(_scale_position(worst[colour], tol))
     for kind, rgb in _MARKS.items():
         out[labels == kind, :3] = rgb
     out[..., 3] = covered
     return out.view(Image)
+
+
+def _scale_position(error: NDArray[np.floating[Any]], tol: float) -> Float64Array:
+    """Where `error` lies on the colour scale: log10(error / tol) / 3, clipped to [0, 1]."""
+    ratio = np.maximum(error, tol) / max(tol, 1e-300)
+    t: Float64Array = np.clip(np.log10(ratio) / _DECADES, 0, 1)
+    return t

@@ -1,10 +1,11 @@
 """The report's figures, drawn with matplotlib (the ``plot`` extra) without pyplot's global
 state, as PNG and SVG. SVG text stays text and every point and legend has an id (``row-<i>``
 for the i-th row of the report, ``pareto-<dtype>``, ``legend``, ...), so a reader or a test
-can find them."""
+can find them. `inline_png`: the error-time figure as a small PNG for a notebook."""
 
 from __future__ import annotations
 
+import io
 from pathlib import Path
 from typing import Any
 
@@ -15,11 +16,18 @@ from matplotlib.lines import Line2D
 
 from .records import ReportData, Row
 
-__all__ = ["FILES", "figures"]
+__all__ = ["FILES", "figures", "inline_png"]
 
 FILES = ("error-time", "gouraud-phong", "area-lights")
 MARKERS = {"avx512": "o", "avx2": "s", "baseline": "^"}
 STYLE: dict[str, Any] = {"svg.fonttype": "none", "svg.hashsalt": "glshade", "font.size": 9}
+# A notebook's figure: the resolutions tried, finest first, until the PNG fits its budget.
+INLINE_DPIS = (72, 60, 50, 40)
+# Its text drawn without antialiasing: 9-pixel letters stay legible, the PNG about halves.
+INLINE_STYLE: dict[str, Any] = {**STYLE, "text.antialiased": False}
+# Colours of the notebook's PNG: 64 keep the 20 scene colours apart (and the greys and blends);
+# a full report's figure at 72 dpi is 9.4 kB, matplotlib's own antialiased PNG 66 kB.
+INLINE_COLOURS = 64
 
 
 def _save(figure: Figure, directory: Path, name: str) -> list[Path]:
@@ -36,6 +44,20 @@ def _pareto(points: list[tuple[float, float]]) -> list[tuple[float, float]]:
         if not front or e < front[-1][1]:
             front.append((t, e))
     return front
+
+
+def _whole_decades(values: list[float]) -> tuple[float, float] | None:
+    """Log-axis limits at whole decades around `values` where they span less than one decade
+    (where matplotlib would label crowded minor ticks, or none), strictly outside them; None
+    where they span a decade or more, or hold no positive number."""
+    positive = [v for v in values if 0 < v < np.inf]
+    if not positive or max(positive) >= 10 * min(positive):
+        return None
+    low = int(np.floor(np.log10(min(positive))))
+    high = int(np.ceil(np.log10(max(positive))))
+    low -= 10.0**low >= min(positive)
+    high += 10.0**high <= max(positive)
+    return 10.0**low, 10.0**high
 
 
 def error_time(report: ReportData) -> Figure:
@@ -72,6 +94,12 @@ def error_time(report: ReportData) -> Figure:
         line.set_gid(f"pareto-{dtype}")
         ax.set_xscale("log")
         ax.set_yscale("log")
+        for limits, set_limits in (
+            (_whole_decades([r.time_ns for _, r in rows]), ax.set_xlim),
+            (_whole_decades([max(r.max_error, floor) for _, r in rows]), ax.set_ylim),
+        ):
+            if limits is not None:
+                set_limits(*limits)
         ax.set_title(dtype)
         ax.set_xlabel("time per vertex (ns, median of the rounds)")
         ax.grid(True, which="major", color="0.9")
@@ -182,3 +210,47 @@ def figures(report: ReportData, directory: Path) -> list[Path]:
             )
             written += _save(figure, directory, "area-lights")
     return written
+
+
+def inline_png(report: ReportData, max_bytes: int) -> bytes:
+    """The error-time figure as a palette PNG for a notebook, at the finest of `INLINE_DPIS`
+    whose file fits `max_bytes` (the coarsest where none does).
+
+    Parameters
+    ----------
+    report : ReportData
+        The report to draw (at least one row).
+    max_bytes : int
+        The largest PNG wanted, in bytes.
+
+    Returns
+    -------
+    bytes
+        The PNG file.
+    """
+    # Pillow is a dependency of matplotlib: present wherever this module imports.
+    from PIL import Image as PillowImage
+
+    with matplotlib.rc_context(INLINE_STYLE):  # type: ignore[arg-type]
+        figure = error_time(report)
+        png = b""
+        for dpi in INLINE_DPIS:
+            buffer = io.BytesIO()
+            figure.savefig(buffer, format="png", dpi=dpi)
+            buffer.seek(0)
+            # No dithering: it would scatter noise over the flat background, and bytes with it.
+            picture = (
+                PillowImage.open(buffer)
+                .convert("RGB")
+                .quantize(
+                    INLINE_COLOURS,
+                    method=PillowImage.Quantize.FASTOCTREE,
+                    dither=PillowImage.Dither.NONE,
+                )
+            )
+            out = io.BytesIO()
+            picture.save(out, format="PNG", optimize=True)
+            png = out.getvalue()
+            if len(png) <= max_bytes:
+                break
+    return png

@@ -83,7 +83,27 @@ class Report(ReportData):
         `studies.area_light_convergence` (empty when the studies were left out).
     gouraud_phong : tuple of dict
         `studies.gouraud_vs_phong` (empty when the studies were left out).
+
+    Notes
+    -----
+    ``repr(report)`` is one paragraph: the rows, the worst error over its bound, the median
+    time, the studies and the machine. In a notebook a Report shows a table per dtype and
+    accuracy mode (rows, largest error, worst error over its bound, flipped vertices, the
+    median ns per vertex of each instruction set) and its error-against-time figure, under
+    20,000 characters; without matplotlib, a line saying how to get the figure.
     """
+
+    def __repr__(self) -> str:
+        from .report_files import summary
+
+        return summary(self)
+
+    def _repr_html_(self) -> str:
+        """A table per dtype and accuracy mode and the error-against-time figure, for a
+        notebook (`report_files.html`)."""
+        from .report_files import html
+
+        return html(self)
 
     def write(self, directory: str | Path) -> list[Path]:
         """Writes report.md, report.json, report.csv and, with matplotlib, the figures (PNG and
@@ -211,7 +231,12 @@ def report(
     studies : bool
         Also the area-light and Gouraud-Phong studies.
     progress : bool
-        Show a progress bar (tqdm's when installed, else one line on stderr).
+        Show a progress bar of the kind the place it runs in shows well: in a Jupyter kernel
+        with ipywidgets (the ``notebook`` extra, ``pip install 'glshade[notebook]'``), tqdm's
+        notebook widget; in a kernel without ipywidgets, none (tqdm's widget would only warn
+        "IProgress not found", and a text bar would clutter the cell); elsewhere (a terminal,
+        a log file, a pipe), a text bar on stderr, tqdm's when it is installed, else one line
+        rewritten in place. False: no bar anywhere.
 
     Returns
     -------
