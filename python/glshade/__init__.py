@@ -15,17 +15,20 @@ from ._camera import Camera
 from ._compare import Comparison, compare
 from ._glshade import __version__
 from ._image import Image
+from ._intake import ColorRangeWarning
 from ._normals import face_normals, vertex_normals
 from ._render import render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
 from ._shade_mesh import shade_mesh
+from ._transfer import srgb_decode, srgb_encode
 
 if TYPE_CHECKING:
     from .lab.report import Report, report
 
 __all__ = [
     "Camera",
+    "ColorRangeWarning",
     "Comparison",
     "Image",
     "Light",
@@ -45,6 +48,8 @@ __all__ = [
     "report",
     "shade",
     "shade_mesh",
+    "srgb_decode",
+    "srgb_encode",
     "vertex_normals",
 ]
 

@@ -12,7 +12,8 @@ from typing import Literal
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from ._params import rgb, scalar, vector3
+from ._intake import colors_checked, one_of
+from ._params import rgb, scalar, vector3, warn_bytes
 from ._scene import Lights
 from ._typing import Float64Array
 
@@ -64,32 +65,51 @@ def _lights(
     normal: NDArray[np.float64],
     colours: tuple[ArrayLike, ArrayLike, ArrayLike],
     attenuation: tuple[float, float, float],
-    emission: Emission,
+    emission: object,
+    owner: str,
 ) -> Lights:
     """k point lights at `points` sharing the (ambient, diffuse, specular) `colours` evenly, with
-    GL's (k0, k1, k2) `attenuation`."""
-    if emission not in ("uniform", "lambertian"):
-        raise ValueError(f"emission must be 'uniform' or 'lambertian', got {emission!r}")
+    GL's (k0, k1, k2) `attenuation`; `owner` (the function called) is named by the warning for
+    colours that look like 0-255 bytes."""
+    mode = one_of(emission, "emission", ("uniform", "lambertian"))
     k = len(points)
+    given = {
+        name: rgb(value, name, alpha=True)
+        for name, value in zip(("ambient", "diffuse", "specular"), colours, strict=True)
+    }
     share = []
-    for name, value in zip(("ambient", "diffuse", "specular"), colours, strict=True):
-        c = rgb(value, name, alpha=True).copy()
-        c[:3] /= k  # alpha is not a power: GL ignores a light's alpha
-        share.append(c)
-    # GL's spot factor with a 90° cutoff and exponent 1 is max(cos θ, 0) from the normal.
-    lambertian = emission == "lambertian"
-    return Lights(
-        position=np.c_[points, np.ones(k)],
-        ambient=share[0],
-        diffuse=share[1],
-        specular=share[2],
-        constant_attenuation=scalar(attenuation[0], "constant_attenuation", 0.0),
-        linear_attenuation=scalar(attenuation[1], "linear_attenuation", 0.0),
-        quadratic_attenuation=scalar(attenuation[2], "quadratic_attenuation", 0.0),
-        spot_direction=normal if lambertian else (0.0, 0.0, -1.0),
-        spot_cutoff=90.0 if lambertian else 180.0,
-        spot_exponent=1.0 if lambertian else 0.0,
+    for c in given.values():
+        part = c.copy()
+        part[:3] /= k  # alpha is not a power: GL ignores a light's alpha
+        share.append(part)
+    k0, k1, k2 = (
+        scalar(a, name, 0.0)
+        for a, name in zip(
+            attenuation,
+            ("constant_attenuation", "linear_attenuation", "quadratic_attenuation"),
+            strict=True,
+        )
     )
+    # GL's spot factor with a 90° cutoff and exponent 1 is max(cos θ, 0) from the normal.
+    lambertian = mode == "lambertian"
+    # The k lights each carry 1/k of the colour: they warn about the whole light's, below.
+    with colors_checked():
+        lights = Lights(
+            position=np.c_[points, np.ones(k)],
+            ambient=share[0],
+            diffuse=share[1],
+            specular=share[2],
+            constant_attenuation=k0,
+            linear_attenuation=k1,
+            quadratic_attenuation=k2,
+            spot_direction=normal if lambertian else (0.0, 0.0, -1.0),
+            spot_cutoff=90.0 if lambertian else 180.0,
+            spot_exponent=1.0 if lambertian else 0.0,
+        )
+    # As `Lights` decides: an attenuated light's colour is an intensity, not bytes.
+    if (k0, k1, k2) == (1.0, 0.0, 0.0):
+        warn_bytes(given, owner)
+    return lights
 
 
 def rectangle_light(
@@ -119,7 +139,8 @@ def rectangle_light(
         The number of point lights, >= 1; they sit at the Fibonacci lattice
         ``s = (i + 1/2)/k - 1/2``, ``t = frac(1/2 + i/φ) - 1/2`` (k = 1: the centre).
     diffuse : (3,) or (4,) float
-        The whole light's diffuse colour; each point light gets 1/k of the RGB.
+        The whole light's diffuse colour, numbers in [0, 1] (uint8 is divided by 255; a name
+        such as ``"white"`` is refused); each point light gets 1/k of the RGB.
     specular : (3,) or (4,) float
         The whole light's specular colour, shared the same way.
     ambient : (3,) or (4,) float
@@ -134,6 +155,7 @@ def rectangle_light(
         ``"uniform"``: each point shines equally in all directions (the lecture's sum of point
         lights). ``"lambertian"``: each is weighted by ``max(cos θ, 0)`` from the normal
         ``cross(u, v)`` (GL's spot factor with a 90° cutoff and exponent 1): a one-sided panel.
+        Either name in any case (``"Lambertian"``).
 
     Returns
     -------
@@ -144,7 +166,13 @@ def rectangle_light(
     ------
     ValueError, TypeError
         For a bad shape, ``u`` parallel to ``v``, k < 1, or a bad colour or attenuation,
-        naming the argument.
+        naming the argument; a colour given by name (the message gives its numbers).
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a colour of an unattenuated light (the default attenuation) that looks like 0-255
+        bytes: every value a whole number in [0, 255], the largest 16 or more.
     """
     count = _count(k)
     c = vector3(center, "center")
@@ -156,7 +184,9 @@ def rectangle_light(
     st = lattice(count) - 0.5
     points = c + st[:, :1] * eu + st[:, 1:] * ev
     attenuation = (constant_attenuation, linear_attenuation, quadratic_attenuation)
-    return _lights(points, normal, (ambient, diffuse, specular), attenuation, emission)
+    return _lights(
+        points, normal, (ambient, diffuse, specular), attenuation, emission, "rectangle_light"
+    )
 
 
 def disc_light(
@@ -205,6 +235,16 @@ def disc_light(
     -------
     Lights
         k positional lights, built from arrays.
+
+    Raises
+    ------
+    ValueError, TypeError
+        As `rectangle_light`, and for a zero `normal` or a `radius` <= 0.
+
+    Warns
+    -----
+    ColorRangeWarning
+        As `rectangle_light`.
     """
     count = _count(k)
     c = vector3(center, "center")
@@ -220,4 +260,4 @@ def disc_light(
     xy = concentric_disc(lattice(count)) * r
     points = c + xy[:, :1] * e1 + xy[:, 1:] * e2
     attenuation = (constant_attenuation, linear_attenuation, quadratic_attenuation)
-    return _lights(points, n, (ambient, diffuse, specular), attenuation, emission)
+    return _lights(points, n, (ambient, diffuse, specular), attenuation, emission, "disc_light")

@@ -13,6 +13,10 @@ The rules (the table of the documentation's Arrays and dtypes page, docs/pages/g
   already is one is used as it is, anything else is copied.
 - Vertex colours of dtype uint8 (trimesh's, PNG's, PIL's 0-255) are scaled to [0, 1] by 1/255;
   any other dtype is taken as the colour values themselves.
+- Colours are numbers: a colour name (``"red"``) raises ``TypeError`` saying so, with the numbers
+  to write instead; a material or light colour whose every value is a whole number in [0, 255],
+  the largest 16 or more, warns (`ColorRangeWarning`: bytes written where GL takes [0, 1]).
+- Names of options are case-insensitive (``"Phong"`` is ``"phong"``).
 - ``out=`` is never copied: it must be exactly right, and it must not share memory with an input
   (checked exactly by the native module, and here for two maps of one file).
 """
@@ -21,6 +25,11 @@ from __future__ import annotations
 
 import mmap
 import os
+import sys
+import warnings
+from collections.abc import Iterator
+from contextlib import contextmanager
+from contextvars import ContextVar
 from typing import Any
 
 import numpy as np
@@ -30,6 +39,18 @@ from ._typing import Float64Array, FloatArray
 
 _FLOAT32 = np.dtype(np.float32)
 _FLOAT64 = np.dtype(np.float64)
+
+
+class ColorRangeWarning(UserWarning):
+    """A colour that looks written in bytes (0-255) where GL takes [0, 1].
+
+    Every value of the colour is a whole number in [0, 255] and the largest is 16 or more:
+    (255, 128, 0) rather than (1, 0.5, 0). Smaller whole numbers, (2, 2, 2) or (5, 5, 5), are
+    how a bright light is written, and as bytes they would be a near-black colour, so they do
+    not warn; nor does a light with attenuation, whose colour is an intensity. GL allows
+    values above 1 (high dynamic range), so this is a warning, not an error; silence it with
+    ``warnings.filterwarnings("ignore", category=glshade.ColorRangeWarning)``.
+    """
 
 
 def array(value: ArrayLike, name: str) -> NDArray[Any]:
@@ -93,7 +114,7 @@ def vertices(
         return ready(p, dtype), ready(n, dtype), None
     given = {"positions": p, "normals": n}
     if colors is not None:
-        given["colors"] = color_values(array(colors, "colors"))
+        given["colors"] = color_values(vertex_colors(colors))
     leading = []
     for name, a in given.items():
         if a.ndim == 0 or a.shape[-1] not in _WIDTHS[name]:
@@ -164,8 +185,8 @@ def transform(value: ArrayLike | None, name: str) -> Float64Array:
 
 
 def rgba(value: ArrayLike, name: str) -> tuple[float, float, float, float]:
-    """A colour of 3 or 4 components as RGBA (a missing alpha is 1)."""
-    a = real(value, name)
+    """A colour of 3 or 4 components as RGBA (a missing alpha is 1), checked by `color`."""
+    a = color(value, name)
     if a.shape not in ((3,), (4,)):
         raise ValueError(f"{name} must have shape (3,) or (4,), got shape {a.shape}")
     r, g, b, alpha = (*a.tolist(), 1.0)[:4]
@@ -198,10 +219,23 @@ def number(value: object, name: str) -> float:
 
 
 def choice(value: object, name: str) -> str:
-    """`value` checked to be a string before the native module parses it."""
+    """`value` checked to be a string, lower-cased before the native module parses it: names
+    are case-insensitive (``"Phong"`` is ``"phong"``), as matplotlib's and Pillow's are."""
     if not isinstance(value, str):
         raise TypeError(f"{name} must be a string, got {value!r}")
-    return value
+    return value.lower()
+
+
+def one_of(value: object, name: str, options: tuple[str, ...]) -> str:
+    """`value` as one of the lower-case `options`, whatever its case."""
+    name_given = choice(value, name)
+    if name_given not in options:
+        quoted = [repr(o) for o in options]
+        alternatives = (
+            ", ".join(quoted[:-1]) + " or " + quoted[-1] if len(quoted) > 1 else quoted[0]
+        )
+        raise ValueError(f"{name} must be {alternatives}, got {value!r}")
+    return name_given
 
 
 def optional_choice(value: object, name: str) -> str | None:
@@ -242,3 +276,159 @@ def out_array(out: object, inputs: dict[str, NDArray[Any] | None]) -> FloatArray
                 f"would overwrite {name} while it is read; pass a separate out"
             )
     return out
+
+
+# CSS's names (matplotlib's too) of a few colours, for the error that meets a colour name.
+_NAMED = {
+    "black": (0.0, 0.0, 0.0),
+    "white": (1.0, 1.0, 1.0),
+    "red": (1.0, 0.0, 0.0),
+    "lime": (0.0, 1.0, 0.0),
+    "green": (0.0, 128 / 255, 0.0),
+    "blue": (0.0, 0.0, 1.0),
+    "yellow": (1.0, 1.0, 0.0),
+    "cyan": (0.0, 1.0, 1.0),
+    "magenta": (1.0, 0.0, 1.0),
+    "gray": (128 / 255, 128 / 255, 128 / 255),
+    "grey": (128 / 255, 128 / 255, 128 / 255),
+    "orange": (1.0, 165 / 255, 0.0),
+}
+
+
+def _numbers(values: Any) -> str:
+    return "(" + ", ".join(f"{float(x):.3g}" for x in values) + ")"
+
+
+def _first_name(a: NDArray[Any]) -> str:
+    """The first item of a string array that is not a number's text ("red" in ("1", "red"))."""
+    for item in a.reshape(-1).tolist():
+        try:
+            float(item)
+        except ValueError:
+            return str(item)
+    return str(a.reshape(-1)[0])
+
+
+def _color_name_error(given: str, name: str) -> TypeError:
+    """The error for a colour given by name: the numbers to write instead."""
+    key = given.strip().lower()
+    rgb: tuple[float, ...] | None = _NAMED.get(key)
+    hex_digits = key[1:]
+    if rgb is None and key.startswith("#") and len(hex_digits) in (6, 8):
+        try:
+            rgb = tuple(int(hex_digits[i : i + 2], 16) / 255 for i in range(0, 6, 2))
+        except ValueError:
+            rgb = None
+    example = f"{_numbers(rgb)} for {given!r}" if rgb is not None else "(1, 0, 0) for red"
+    return TypeError(
+        f"{name} takes numbers, not a colour name: got {given!r}. Give RGB or RGBA components "
+        f"in [0, 1], e.g. {name}={example}, or with alpha {example.split(' for')[0][:-1]}, 1)"
+    )
+
+
+def color(value: ArrayLike, name: str) -> Float64Array:
+    """A scene colour (material, light, light model, background) as a float64 array of any
+    shape: a name raises a TypeError giving the numbers instead; uint8 is divided by 255 (as
+    vertex colours are); anything else is taken as the values themselves."""
+    if isinstance(value, str):
+        raise _color_name_error(value, name)
+    a: NDArray[Any] | None = value if isinstance(value, np.ndarray) else None
+    if a is None:
+        try:
+            a = np.asarray(value)
+        except (TypeError, ValueError):
+            a = None  # `real` names what numpy could not read
+    if a is not None and a.dtype.kind in "US" and a.size:
+        raise _color_name_error(_first_name(a), name)
+    if a is not None and a.dtype == np.uint8:
+        return real(a / 255.0, name)
+    return real(value, name)
+
+
+def vertex_colors(value: ArrayLike, name: str = "colors") -> NDArray[Any]:
+    """Per-vertex colours as an array of real numbers; colour names raise a TypeError that says
+    names are not accepted (the values of `color_values` follow)."""
+    if isinstance(value, str):
+        raise _color_name_error(value, name)
+    a = value if isinstance(value, np.ndarray) else None
+    if a is None:
+        try:
+            a = np.asarray(value)
+        except (TypeError, ValueError):
+            a = None
+    if a is not None and a.dtype.kind in "US" and a.size:
+        raise TypeError(
+            f"{name} takes numbers, not colour names: got {_first_name(a)!r}. Give an "
+            "(n, 3) or (n, 4) array of RGB(A) components in [0, 1] (uint8 0-255 is divided by "
+            "255), e.g. np.tile((1, 0, 0), (n, 1)) for red"
+        )
+    return array(value, name)
+
+
+# The smallest largest value of a colour taken for bytes: below it, whole numbers are more
+# likely a bright light's (2, 2, 2) than a near-black byte colour (a sixteenth of full scale).
+_BYTE_HINT = 16.0
+
+
+# Set while glshade builds objects from colours it has already checked under the user's own
+# names: a context variable, so another thread's (or task's) colours still warn.
+_CHECKED: ContextVar[bool] = ContextVar("glshade_colors_checked", default=False)
+
+
+@contextmanager
+def colors_checked() -> Iterator[None]:
+    """Builds `Light`, `Material` and `Scene` objects from colours that were checked and warned
+    about already (under the user's names, or when the object was first made), without a
+    second `ColorRangeWarning`."""
+    token = _CHECKED.set(True)
+    try:
+        yield
+    finally:
+        _CHECKED.reset(token)
+
+
+def warn_if_bytes(values: Float64Array, name: str, owner: str) -> None:
+    """Warns (`ColorRangeWarning`) when every value of the colour `values` is a whole number in
+    [0, 255] and the largest is at least `_BYTE_HINT`: bytes written where GL takes [0, 1].
+    `owner` names the object the colour belongs to ("Material", "Light")."""
+    if values.size == 0 or _CHECKED.get():
+        return
+    high, low = values.max(), values.min()
+    if not (
+        _BYTE_HINT <= high <= 255.0 and low >= 0.0 and np.array_equal(values, np.round(values))
+    ):
+        return
+    shown = (
+        f"{name}={_numbers(values)}"
+        if values.ndim == 1
+        else f"{name} (every value a whole number, up to {high:g})"
+    )
+    scaled = ""
+    if values.ndim == 1:
+        # An alpha of 1 beside bytes is GL's opaque, kept as it is.
+        divided = values / 255
+        if len(values) == 4 and values[3] == 1.0:
+            divided[3] = 1.0
+        scaled = f": {name}={_numbers(divided)}"
+    warnings.warn(
+        ColorRangeWarning(
+            f"{owner} {shown} looks like 0-255 byte values, but GL colours are in [0, 1] (above "
+            f"1 they saturate: a near-white result). Divide by 255{scaled}; or, if the values "
+            "above 1 are meant (high dynamic range), silence this with "
+            "warnings.filterwarnings('ignore', category=glshade.ColorRangeWarning)"
+        ),
+        stacklevel=_caller_level(),
+    )
+
+
+_PACKAGE = os.path.dirname(os.path.abspath(__file__))
+
+
+def _caller_level() -> int:
+    """The stacklevel of the first frame outside glshade, so a warning points at the user's
+    line whichever of glshade's functions built the colour."""
+    level, frame = 1, sys._getframe(1)
+    while frame is not None and os.path.abspath(frame.f_code.co_filename).startswith(_PACKAGE):
+        frame = frame.f_back  # type: ignore[assignment]
+        level += 1
+    return level

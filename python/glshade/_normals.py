@@ -7,6 +7,7 @@ from typing import Any
 from numpy.typing import ArrayLike
 
 from . import _glshade
+from ._intake import one_of
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Weighting
 
@@ -60,7 +61,7 @@ def vertex_normals(
         ``"angle"`` sums the unit face normals weighted by the corner angle at the vertex
         (trimesh's ``Trimesh.vertex_normals``); ``"area"`` sums the unnormalised cross products,
         i.e. weights by area (Open3D's ``compute_vertex_normals``); ``"uniform"`` sums the unit
-        face normals (``trimesh.geometry.mean_vertex_normals``).
+        face normals (``trimesh.geometry.mean_vertex_normals``). Any case (``"Area"``).
 
     Returns
     -------
@@ -86,8 +87,7 @@ def vertex_normals(
            [0., 0., 1.],
            [0., 0., 1.]], dtype=float32)
     """
-    if not isinstance(weighting, str):
-        raise TypeError(f"weighting must be 'angle', 'area' or 'uniform', got {weighting!r}")
+    weights = one_of(weighting, "weighting", ("angle", "area", "uniform"))
     v, f = mesh_arrays(vertices, faces)
-    result: FloatArray = _glshade.vertex_normals(v, f, weighting)
+    result: FloatArray = _glshade.vertex_normals(v, f, weights)
     return result

@@ -1,5 +1,11 @@
 """Checks of user parameters given in a model's own names (``l_a``, ``k_d``, ``view_pos``...), so
-an error names the argument the user wrote, not the GL state it becomes."""
+an error names the argument the user wrote, not the GL state it becomes.
+
+Colours follow `_intake`'s rules for a scene's colours (`_intake.color`): a colour name raises
+the TypeError that gives its numbers, uint8 is divided by 255, and one that looks like 0-255
+bytes warns (`ColorRangeWarning`, `warn_bytes`) under the user's name, once: the `Light`,
+`Material` and `Scene` made from it are built inside `colors_checked`, so they do not warn
+again under GL's names."""
 
 from __future__ import annotations
 
@@ -8,16 +14,34 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._intake import real
+from ._intake import color, real, warn_if_bytes
 from ._typing import Float64Array
+
+
+def _finite(a: Float64Array, value: Any, name: str) -> Float64Array:
+    if not np.isfinite(a).all():
+        raise ValueError(f"{name} must be finite, got {value!r}")
+    return a
 
 
 def real_array(value: ArrayLike, name: str) -> Float64Array:
     """`value` as a finite float64 array (the intake's rule); ValueError for NaN or inf."""
-    a = real(value, name)
-    if not np.isfinite(a).all():
-        raise ValueError(f"{name} must be finite, got {value!r}")
-    return a
+    return _finite(real(value, name), value, name)
+
+
+def color_array(value: ArrayLike, name: str) -> Float64Array:
+    """A colour or intensity of any shape as a finite float64 array, by `_intake.color`'s rule:
+    a colour name raises a TypeError giving its numbers, uint8 is divided by 255."""
+    return _finite(color(value, name), value, name)
+
+
+def warn_bytes(colors: dict[str, Float64Array], owner: str) -> None:
+    """`_intake.warn_if_bytes` on each colour of `colors` (checked by `rgb` or `color_array`,
+    by the user's name), naming `owner`, the function they were given to. Called once the
+    objects are built, as `Material` and `Lights` warn, so a wrong argument raises first; an
+    attenuated light's colour, an intensity, is left out by the caller, as `Lights` does."""
+    for name, values in colors.items():
+        warn_if_bytes(values, name, owner)
 
 
 def scalar(value: Any, name: str, minimum: float | None = None) -> float:
@@ -45,10 +69,12 @@ def vector3(
 
 
 def rgb(value: ArrayLike, name: str, *, alpha: bool = False, grey: bool = False) -> Float64Array:
-    """A colour: (3,) RGB, or (4,) RGBA when `alpha`, or a number meaning grey when `grey`."""
-    a = real_array(value, name)
+    """A colour: (3,) RGB, or (4,) RGBA when `alpha`, or a number meaning grey when `grey`, by
+    `color_array`'s rule (a name refused, uint8 divided by 255). `warn_bytes` warns about it
+    once the objects it makes are built."""
+    a = color_array(value, name)
     if grey and a.ndim == 0:
-        return np.full(3, float(a))
+        a = np.full(3, float(a))
     widths = (3, 4) if alpha else (3,)
     if a.ndim != 1 or a.shape[0] not in widths:
         expected = " or ".join(f"({w},)" for w in widths)

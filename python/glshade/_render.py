@@ -1,4 +1,5 @@
-"""`render`: a triangle mesh as an image, with flat, Gouraud or Phong shading."""
+"""`render`: a triangle mesh as an image, with flat, Gouraud or Phong shading, encoded by a
+transfer function."""
 
 from __future__ import annotations
 
@@ -10,9 +11,20 @@ from numpy.typing import ArrayLike
 from . import _glshade
 from ._camera import Camera
 from ._image import Image
-from ._intake import choice, flag, integer, optional_choice, rgba, transform
+from ._intake import (
+    choice,
+    color,
+    flag,
+    integer,
+    one_of,
+    optional_choice,
+    rgba,
+    transform,
+    warn_if_bytes,
+)
 from ._render_input import render_input
 from ._scene import Scene
+from ._transfer import Transfer, apply_transfer, transfer_name
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, Shading, Space
 
 __all__ = ["render"]
@@ -38,6 +50,7 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
+    transfer: Transfer = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
@@ -60,6 +73,7 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
+    transfer: Transfer = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
@@ -82,6 +96,7 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
+    transfer: Transfer = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
@@ -103,6 +118,7 @@ def render(
     cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
     lights_in: Space = "eye",
+    transfer: Transfer = "linear",
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -112,16 +128,27 @@ def render(
     vertices : (n, 3) float32 or float64, or a mesh
         Vertex positions in model coordinates; or, with `faces` omitted, an object with
         ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``) or a ``trimesh.Scene`` (flattened
-        by ``scene.to_mesh()``, its graph's transforms applied): ``render(mesh, scene, camera)``.
+        by ``scene.to_mesh()``, its graph's transforms applied), or a ``(vertices, faces)``
+        tuple as `glshade.meshes` returns: ``render(mesh)``, ``render(mesh, scene)``,
+        ``render(mesh, camera)``, ``render(mesh, scene, camera)``.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle; counter-clockwise on screen is the front.
-    scene : Scene
+    scene : Scene, optional
         Lights and viewer in eye coordinates (as for `shade`; see `lights_in`), materials,
         light model. With
         ``two_side``, back-facing triangles get the back colour; with ``separate_specular``,
         the specular colour is added after interpolation and the sum clamped (GL's colour sum).
-    camera : Camera
-        The view and projection.
+        None (the default): a white key light from the upper left of the default view and a
+        dim fill from the lower right, both directional and fixed in the world (whatever
+        `lights_in` says, so an orbiting camera sees them stay put), a light grey material
+        with a soft highlight, GL's global ambient and a local viewer at the eye.
+    camera : Camera, optional
+        The view and projection. None (the default): a perspective camera (35 degrees
+        vertically) that frames the mesh's bounds wherever it is and whatever its size: it
+        looks at the centre of the bounding box of the vertices (placed by `model`) from in
+        front, to the right and above (the direction (0.45, 0.35, 1) with +y up), from the
+        distance where the bounding sphere fills 95% of the narrower field of view, with the
+        near and far planes just outside that sphere.
     width : int
         The image width in pixels, in [1, 16384].
     height : int
@@ -130,7 +157,8 @@ def render(
         Where the equation is evaluated: at every pixel with the interpolated position and
         normal (``"phong"``), at the vertices with the colours interpolated (``"gouraud"``, GL's
         smooth shading), or once per face with its face normal at its last vertex (``"flat"``,
-        GL's flat shading with the provoking vertex convention).
+        GL's flat shading with the provoking vertex convention). This name and the others
+        below are case-insensitive (``"Phong"``).
     normals : (n, 3) or (m, 3) float, optional
         One normal per vertex for Phong and Gouraud, one per face for flat shading. Default:
         `vertex_normals` (angle-weighted) or `face_normals` of the mesh.
@@ -161,7 +189,14 @@ def render(
         Where the scene's lights and viewer are given. "world": fixed in the world, moved into
         eye coordinates by ``camera.view`` (`Scene.in_eye_space`: GL's ``glLoadMatrix(view)``
         before ``glLight``), so an orbiting camera sees them stay put; GL's own viewers
-        (0, 0, 1, 0) and (0, 0, 0, 1) stay with the eye.
+        (0, 0, 1, 0) and (0, 0, 0, 1) stay with the eye. The default scene is always in world
+        coordinates.
+    transfer : {"linear", "srgb", "gamma2.2"}
+        How the image's RGB is encoded (alpha and the depth are not): ``"linear"`` (the
+        default) returns the lighting equation's values as they are, GL's output without
+        ``GL_FRAMEBUFFER_SRGB``; ``"srgb"`` applies `srgb_encode` (IEC 61966-2-1), the
+        brightness pyrender's, three.js's and Blender's sRGB output shows; ``"gamma2.2"``
+        applies ``x^(1/2.2)``. Names are case-insensitive. The background is encoded too.
     depth : bool
         Also return the depth buffer.
 
@@ -177,7 +212,13 @@ def render(
     IndexError
         For a face index out of range.
     ValueError, TypeError
-        For wrong shapes, dtypes, names, sizes or matrices.
+        For wrong shapes, dtypes, names, sizes or matrices; a colour given by name.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a `background` whose every value is a whole number in [0, 255], the largest 16
+        or more (bytes where GL takes [0, 1]).
 
     Examples
     --------
@@ -187,21 +228,34 @@ def render(
     >>> image = gs.render(v, [[0, 1, 2]], scene, gs.Camera(), width=4, height=4)
     >>> image.shape, image.dtype
     ((4, 4, 4), dtype('float32'))
+
+    Without a scene and a camera, the default lights and a camera that frames the mesh:
+
+    >>> image = gs.render(gs.meshes.torus(24, 12, 1.0, 0.4), width=64, height=48)
+    >>> image.shape, bool((image[..., 3] > 0).any())
+    ((48, 64, 4), True)
     """
+    w = integer(width, "width", 1, _glshade.MAX_SIZE)
+    h = integer(height, "height", 1, _glshade.MAX_SIZE)
+    mode = one_of(shading, "shading", ("flat", "gouraud", "phong"))
+    encoding = transfer_name(transfer)
     given = render_input(
         vertices,
         faces,
         scene,
         camera,
-        shading=shading,
+        shading=mode,
         normals=normals,
         colors=colors,
         color_material=color_material,
         lights_in=lights_in,
+        model=model,
+        width=w,
+        height=h,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
-    w = integer(width, "width", 1, _glshade.MAX_SIZE)
-    h = integer(height, "height", 1, _glshade.MAX_SIZE)
+    clear = rgba(background, "background")
+    warn_if_bytes(color(background, "background"), "background", "render")
     image, z = _glshade.render(
         v,
         f,
@@ -211,7 +265,7 @@ def render(
         model=transform(model, "model"),
         width=w,
         height=h,
-        shading=choice(shading, "shading"),
+        shading=mode,
         normals=n,
         colors=c,
         color_material=optional_choice(given.color_material, "color_material"),
@@ -219,7 +273,7 @@ def render(
         normalize=flag(normalize, "normalize"),
         rescale_normal=flag(rescale_normal, "rescale_normal"),
         cull="none" if cull is None else choice(cull, "cull"),
-        background=np.array(rgba(background, "background")),
+        background=np.array(clear),
     )
-    result = image.view(Image)
+    result = apply_transfer(image, encoding).view(Image)
     return (result, z) if depth else result

@@ -1,5 +1,6 @@
 """The arguments of `render` (and of `glsl.render`) as the pipeline takes them: the mesh and its
-own colours, face colours on unshared vertices, the scene in eye coordinates."""
+own colours, face colours on unshared vertices, the scene in eye coordinates; without a camera
+one that frames the mesh, without a scene the default one (`_framing`)."""
 
 from __future__ import annotations
 
@@ -10,7 +11,8 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._camera import Camera
-from ._intake import array, color_values, rows
+from ._framing import default_scene, frame
+from ._intake import color_values, one_of, rows, transform, vertex_colors
 from ._normals import vertex_normals
 from ._scene import Scene
 from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors
@@ -31,6 +33,59 @@ class RenderInput:
     camera: Camera
 
 
+def is_pair(obj: Any) -> bool:
+    """A ``(vertices, faces)`` tuple, as `glshade.meshes` returns: two 2-d array-likes (a
+    tuple of vertex rows has 1-d items)."""
+    return (
+        isinstance(obj, tuple)
+        and len(obj) == 2
+        and np.ndim(obj[0]) == 2
+        and np.ndim(obj[1]) == 2
+        and not isinstance(obj[0], (Scene, Camera))
+    )
+
+
+def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, Any, Any, Any]:
+    """(vertices, faces, scene, camera) from the positional forms ``(vertices, faces, scene,
+    camera)``, ``(mesh, scene, camera)``, ``(mesh, camera)``, ``(vertices, faces, camera)``,
+    a mesh being an object with ``.vertices`` and ``.faces`` or a ``(vertices, faces)`` tuple;
+    scene and camera None where not given. A TypeError names what does not fit."""
+    if is_pair(vertices) and (faces is None or isinstance(faces, (Scene, Camera))):
+        if camera is not None:
+            raise TypeError(
+                "render((vertices, faces), scene, camera) takes a scene and a camera after the "
+                f"mesh, got a {type(camera).__name__} as well"
+            )
+        (vertices, faces), scene, camera = vertices, faces, scene
+    if isinstance(faces, (Scene, Camera)):
+        if not is_mesh(vertices):
+            raise TypeError(
+                "faces is required unless the first argument is a mesh with .vertices and "
+                f".faces: got a {type(faces).__name__} as faces after vertices of type "
+                f"{type(vertices).__name__}; the call is render(vertices, faces, scene, camera)"
+            )
+        if scene is not None and camera is not None:
+            raise TypeError(
+                "render(mesh, scene, camera) takes a scene and a camera after the mesh, got a "
+                f"{type(camera).__name__} as well"
+            )
+        faces, scene, camera = None, faces, scene if scene is not None else camera
+    if isinstance(scene, Camera) and camera is None:
+        scene, camera = None, scene  # render(mesh, camera): the default scene
+    order = "the call is render(vertices, faces, scene, camera) or render(mesh, scene, camera)"
+    if scene is not None and not isinstance(scene, Scene):
+        raise TypeError(
+            f"scene must be a glshade.Scene, or None for the default key light, got "
+            f"{type(scene)!r}; {order}"
+        )
+    if camera is not None and not isinstance(camera, Camera):
+        raise TypeError(
+            f"camera must be a glshade.Camera, or None for one that frames the mesh, got "
+            f"{type(camera)!r}; {order}"
+        )
+    return vertices, faces, scene, camera
+
+
 def render_input(
     vertices: Any,
     faces: Any,
@@ -42,23 +97,27 @@ def render_input(
     colors: Any,
     color_material: str | None,
     lights_in: str,
+    model: ArrayLike | None = None,
+    width: int | None = None,
+    height: int | None = None,
 ) -> RenderInput:
-    """Checks and prepares `render`'s arguments (see `render` for their meaning)."""
-    if isinstance(faces, Scene) and (camera is None or isinstance(scene, Camera)):
-        faces, scene, camera = None, faces, scene  # render(mesh, scene, camera)
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    if not isinstance(camera, Camera):
-        raise TypeError(f"camera must be a glshade.Camera, got {type(camera)!r}")
-    if lights_in not in ("eye", "world"):
-        raise ValueError(f"lights_in must be 'eye' or 'world', got {lights_in!r}")
+    """Checks and prepares `render`'s arguments (see `render` for their meaning). Without a
+    camera, one framing the mesh (placed by `model`) in an image of `width` x `height` (square
+    when not given); without a scene, the default one, in world coordinates whatever
+    `lights_in` says."""
+    vertices, faces, scene, camera = _arranged(vertices, faces, scene, camera)
+    space = one_of(lights_in, "lights_in", ("eye", "world"))
     mesh = as_mesh(vertices) if faces is None and is_mesh(vertices) else None
     v, f = mesh_arrays(vertices if mesh is None else mesh, faces)
+    if camera is None:
+        m = transform(model, "model")
+        aspect = 1.0 if width is None or height is None else width / height
+        _, camera = frame(v @ m[:3, :3].T + m[:3, 3], aspect)
     own = None
     if colors is None and mesh is not None:
         own = mesh_colors(mesh)
     elif colors is not None and colors is not False:
-        own = (color_values(array(colors, "colors")), "vertex")
+        own = (color_values(vertex_colors(colors)), "vertex")
     c = n = None
     if normals is not None:
         n = rows(normals, "normals", v.dtype)
@@ -74,10 +133,14 @@ def render_input(
         if per == "face":
             # GL colours vertices: each face gets corners of its own, carrying its colour, and
             # the smooth normals of the shared mesh.
-            if shading != "flat":
+            if not (isinstance(shading, str) and shading.lower() == "flat"):
                 n = vertex_normals(v, f) if n is None else n
                 n = n[f].reshape(-1, 3)
             v, c = v[f].reshape(-1, 3), np.repeat(c, 3, axis=0)
             f = np.arange(3 * len(f), dtype=np.int64).reshape(-1, 3)
-    eye_scene = scene.in_eye_space(camera.view) if lights_in == "world" else scene
+    if scene is None:
+        # The default lights belong to the world: an orbiting camera sees them stay put.
+        eye_scene = default_scene().in_eye_space(camera.view)
+    else:
+        eye_scene = scene.in_eye_space(camera.view) if space == "world" else scene
     return RenderInput(v, f, n, c, color_material, eye_scene, camera)

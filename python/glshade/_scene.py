@@ -14,7 +14,18 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import choice, flag, integer, matrix, optional_choice, real, rgba
+from ._intake import (
+    choice,
+    color,
+    colors_checked,
+    flag,
+    integer,
+    matrix,
+    optional_choice,
+    real,
+    rgba,
+    warn_if_bytes,
+)
 from ._typing import Accuracy, Float64Array
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
@@ -22,6 +33,55 @@ __all__ = ["Light", "Lights", "Material", "Scene"]
 _LIGHT = _glshade.Lights.DEFAULTS
 _MATERIAL = _glshade.Material.DEFAULTS
 _SCENE = _glshade.Scene.DEFAULTS
+
+
+# The colour parameters of a light, and of a material.
+_LIGHT_COLORS = ("ambient", "diffuse", "specular")
+_MATERIAL_COLORS = ("ambient", "diffuse", "specular", "emission")
+
+
+def _light_parameters(given: dict[str, Any], single: bool) -> dict[str, Float64Array]:
+    """The parameters of `Lights` (or of one `Light`, `single`) by name, checked: colours
+    through `color` (names refused, uint8 divided by 255), a 3-vector position refused with the
+    two ways of adding w."""
+    parameters = {
+        name: color(given[name], name) if name in _LIGHT_COLORS else real(given[name], name)
+        for name in _glshade.Lights.PARAMETERS
+    }
+    position = parameters["position"]
+    if position.ndim in ((1,) if single else (1, 2)) and position.shape[-1] == 3:
+        if position.ndim == 1:
+            xyz = _format(position)
+            raise ValueError(
+                f"position must have shape (4,), (x, y, z, w), got {xyz} of shape (3,): add w, "
+                f"{xyz[:-1]}, 1) for a point light at {xyz}, or {xyz[:-1]}, 0) for a "
+                f"directional light shining from direction {xyz}"
+            )
+        count = len(position)
+        raise ValueError(
+            f"position must have shape (L, 4), got shape {position.shape}: add a column of w, "
+            f"np.c_[position, np.ones({count})] for point lights, or "
+            f"np.c_[position, np.zeros({count})] for directional lights"
+        )
+    return parameters
+
+
+def _warn_light_bytes(
+    parameters: dict[str, Float64Array], native: _glshade.Lights, owner: str
+) -> None:
+    """`warn_if_bytes` on the colours given for the unattenuated lights: an attenuated light's
+    large colour is its intensity (1 / d^2 brings it down), not bytes."""
+    count = len(native)
+    plain = (
+        (native.column("constant_attenuation").reshape(count) == 1.0)
+        & (native.column("linear_attenuation").reshape(count) == 0.0)
+        & (native.column("quadratic_attenuation").reshape(count) == 0.0)
+    )
+    if not plain.any():
+        return
+    for name in _LIGHT_COLORS:
+        values = parameters[name]
+        warn_if_bytes(values[plain] if values.ndim == 2 else values, name, owner)
 
 
 def _format(value: Any) -> str:
@@ -43,7 +103,9 @@ class Lights:
         Homogeneous ``GL_POSITION``: ``w = 0`` is a directional light shining from direction
         ``(x, y, z)``; otherwise a point light at ``(x, y, z) / w``.
     diffuse : (3,), (4,), (L, 3) or (L, 4) float, default: (1.0, 1.0, 1.0, 1.0)
-        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL.
+        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL. Numbers in
+        [0, 1] (above 1 for a brighter light); uint8 is divided by 255; a name such as
+        ``"red"`` is refused.
     specular : (3,), (4,), (L, 3) or (L, 4) float, default: (1.0, 1.0, 1.0, 1.0)
         ``GL_SPECULAR``, as `diffuse`.
     constant_attenuation : float or (L,) float, default: 1.0
@@ -67,9 +129,16 @@ class Lights:
     Raises
     ------
     ValueError
-        For a wrong shape or a parameter outside GL's range, naming it and the light.
+        For a wrong shape or a parameter outside GL's range, naming it and the light; a
+        position of 3 components, saying which w to add (1: a point light, 0: a direction).
     TypeError
-        For a non-numeric parameter.
+        For a non-numeric parameter, or a colour given by name (the message gives its numbers).
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a colour of unattenuated lights that looks like 0-255 bytes: every value a whole
+        number in [0, 255], the largest 16 or more.
 
     Examples
     --------
@@ -112,8 +181,9 @@ class Lights:
     ) -> None:
         given = locals()
         n = None if count is None else integer(count, "count", 0, 2**62)
-        parameters = [real(given[name], name) for name in _glshade.Lights.PARAMETERS]
-        self._native = _glshade.Lights(parameters, n)
+        parameters = _light_parameters(given, single=False)
+        self._native = _glshade.Lights([parameters[k] for k in _glshade.Lights.PARAMETERS], n)
+        _warn_light_bytes(parameters, self._native, "Lights")
 
     @classmethod
     def _wrap(cls, native: _glshade.Lights) -> Lights:
@@ -214,7 +284,8 @@ class Light(Lights):
         Homogeneous ``GL_POSITION``: ``w = 0`` is a directional light shining from direction
         ``(x, y, z)``; otherwise a point light at ``(x, y, z) / w``.
     diffuse : (3,) or (4,) float, default: (1.0, 1.0, 1.0, 1.0)
-        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL.
+        ``GL_DIFFUSE``; a missing alpha is 1. Negative values are legal, as in GL. Numbers, as
+        for `Lights`: uint8 is divided by 255, a name is refused.
     specular : (3,) or (4,) float, default: (1.0, 1.0, 1.0, 1.0)
         ``GL_SPECULAR``, as `diffuse`.
     constant_attenuation : float, default: 1.0
@@ -236,9 +307,14 @@ class Light(Lights):
     ------
     ValueError
         For a wrong shape (more than one value for a parameter) or a parameter outside GL's
-        range, naming it.
+        range, naming it; a position of 3 components, saying which w to add.
     TypeError
-        For a non-numeric parameter.
+        For a non-numeric parameter, or a colour given by name.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a colour that looks like 0-255 bytes, unless the light is attenuated.
 
     Examples
     --------
@@ -264,14 +340,15 @@ class Light(Lights):
         ambient: ArrayLike = _LIGHT["ambient"],
     ) -> None:
         given = locals()
-        parameters = [real(given[name], name) for name in _glshade.Lights.PARAMETERS]
-        for name, value in zip(_glshade.Lights.PARAMETERS, parameters, strict=True):
+        parameters = _light_parameters(given, single=True)
+        for name, value in parameters.items():
             if value.ndim > (0 if np.ndim(_LIGHT[name]) == 0 else 1):
                 raise ValueError(
                     f"a Light takes one value per parameter, got {name} of shape {value.shape}: "
                     "use glshade.Lights for many lights"
                 )
-        self._native = _glshade.Lights(parameters, None)
+        self._native = _glshade.Lights([parameters[k] for k in _glshade.Lights.PARAMETERS], None)
+        _warn_light_bytes(parameters, self._native, "Light")
 
     def __repr__(self) -> str:
         fields = ", ".join(
@@ -296,6 +373,25 @@ class Material:
         ``GL_EMISSION``; a missing alpha is 1.
     shininess : float, default: 0.0
         ``GL_SHININESS`` >= 0. GL limits it to 128; glshade accepts larger exponents too.
+
+    Raises
+    ------
+    TypeError
+        For a non-numeric parameter, or a colour given by name (``diffuse="red"``): the
+        message gives the numbers to write instead.
+    ValueError
+        For a wrong shape or a parameter outside GL's range.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a colour that looks like 0-255 bytes (every value a whole number in [0, 255], the
+        largest 16 or more): divide it by 255, or give it as uint8.
+
+    Notes
+    -----
+    Colours are numbers in [0, 1] (values above 1 are legal, as in GL); a uint8 colour is
+    divided by 255, as vertex colours are.
     """
 
     __slots__ = ("_native",)
@@ -310,9 +406,13 @@ class Material:
         shininess: float = _MATERIAL["shininess"],
     ) -> None:
         given = locals()
-        self._native = _glshade.Material(
-            [real(given[name], name) for name in _glshade.Material.PARAMETERS]
-        )
+        parameters = {
+            name: color(given[name], name) if name in _MATERIAL_COLORS else real(given[name], name)
+            for name in _glshade.Material.PARAMETERS
+        }
+        self._native = _glshade.Material(list(parameters.values()))
+        for name in _MATERIAL_COLORS:
+            warn_if_bytes(parameters[name], name, "Material")
 
     ambient = property(lambda self: self._native.get("ambient"), doc="(4,) ``GL_AMBIENT``.")
     diffuse = property(lambda self: self._native.get("diffuse"), doc="(4,) ``GL_DIFFUSE``.")
@@ -347,7 +447,8 @@ class Scene:
     back_material : Material, optional
         The back material for two-sided lighting (default: the front material).
     global_ambient : (3,) or (4,) float, default: (0.2, 0.2, 0.2, 1.0)
-        ``GL_LIGHT_MODEL_AMBIENT``.
+        ``GL_LIGHT_MODEL_AMBIENT``: numbers (uint8 divided by 255), no colour name; one that
+        looks like 0-255 bytes warns (`ColorRangeWarning`).
     viewer : (4,) float, default: (0.0, 0.0, 1.0, 0.0)
         The viewer, homogeneous: ``(0, 0, 1, 0)`` (default) is GL's infinite viewer,
         ``(0, 0, 0, 1)`` GL's local viewer at the eye, any ``(x, y, z, 1)`` a viewer at that point
@@ -358,7 +459,7 @@ class Scene:
     separate_specular : bool, default: False
         ``GL_SEPARATE_SPECULAR_COLOR``: `shade` returns the specular sum as a secondary colour.
     specular : {"blinn", "phong"}
-        GL's halfway vector ``(n . h)^s`` or the reflection vector ``(R . V)^s``.
+        GL's halfway vector ``(n . h)^s`` or the reflection vector ``(R . V)^s``; any case.
     specular_gate : bool, default: True
         GL's ``f_i`` (eq. 2.2): a light adds no specular unless ``n . VP > 0``.
         False drops the gate, as learnopengl's shaders do: the specular term is added wherever
@@ -401,6 +502,8 @@ class Scene:
                 raise TypeError(f"{name} must be a Material or None, got {type(m)!r}")
         self.material = Material() if material is None else material
         self.back_material = self.material if back_material is None else back_material
+        ambient = rgba(global_ambient, "global_ambient")
+        warn_if_bytes(color(global_ambient, "global_ambient"), "global_ambient", "Scene")
         viewer_array = real(viewer, "viewer")
         if viewer_array.shape != (4,):
             raise ValueError(f"viewer must have shape (4,), got shape {viewer_array.shape}")
@@ -408,7 +511,7 @@ class Scene:
             self._lights._native,
             self.material._native,
             back_material=None if back_material is None else back_material._native,
-            global_ambient=rgba(global_ambient, "global_ambient"),
+            global_ambient=ambient,
             viewer=tuple(viewer_array.tolist()),
             two_side=flag(two_side, "two_side"),
             separate_specular=flag(separate_specular, "separate_specular"),
@@ -561,21 +664,25 @@ class Scene:
         columns: dict[str, Any] = {n: self._lights._column(n) for n in _glshade.Lights.PARAMETERS}
         columns["position"] = columns["position"].reshape(count, 4) @ m.T
         columns["spot_direction"] = columns["spot_direction"].reshape(count, 3) @ m[:3, :3].T
-        lights = Lights(**columns) if count else Lights(count=0)
+        # Built as the native class takes them: these colours were checked (and any warning
+        # given) when the scene was made, so moving it into eye space warns no second time.
+        parameters = [real(columns[n], n) for n in _glshade.Lights.PARAMETERS]
+        lights = Lights._wrap(_glshade.Lights(parameters, None)) if count else Lights(count=0)
         viewer = self.viewer
         if tuple(viewer) not in ((0.0, 0.0, 1.0, 0.0), (0.0, 0.0, 0.0, 1.0)):
             viewer = m @ viewer
-        return Scene(
-            lights=lights,
-            material=self.material,
-            back_material=None if self.back_material is self.material else self.back_material,
-            global_ambient=self.global_ambient,
-            viewer=viewer,
-            two_side=self.two_side,
-            separate_specular=self.separate_specular,
-            specular=self.specular,  # type: ignore[arg-type]
-            specular_gate=self.specular_gate,
-        )
+        with colors_checked():  # the global ambient warned, if at all, when the scene was made
+            return Scene(
+                lights=lights,
+                material=self.material,
+                back_material=None if self.back_material is self.material else self.back_material,
+                global_ambient=self.global_ambient,
+                viewer=viewer,
+                two_side=self.two_side,
+                separate_specular=self.separate_specular,
+                specular=self.specular,  # type: ignore[arg-type]
+                specular_gate=self.specular_gate,
+            )
 
     def __repr__(self) -> str:
         return (

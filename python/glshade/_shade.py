@@ -3,7 +3,9 @@ collections go to `_lazy`, which shades them chunk by chunk with this same funct
 
 from __future__ import annotations
 
-from typing import cast
+import functools
+from collections.abc import Callable
+from typing import ParamSpec, TypeVar, cast
 
 from numpy.typing import ArrayLike
 
@@ -14,7 +16,30 @@ from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
 
 __all__ = ["shade"]
 
+_P = ParamSpec("_P")
+_R = TypeVar("_R")
 
+
+def _names_missing_normals(function: Callable[_P, _R]) -> Callable[_P, _R]:
+    """`function` (`shade`) saying that the normals are missing when it is called as
+    ``shade(positions, scene)``, where Python would say the scene is."""
+
+    @functools.wraps(function)
+    def checked(*args: _P.args, **kwargs: _P.kwargs) -> _R:
+        if len(args) == 2 and isinstance(args[1], Scene) and "scene" not in kwargs:
+            raise TypeError(
+                "shade() is missing its normals: the call is gs.shade(positions, normals, "
+                "scene), and the second argument was the Scene. Give one normal per position, "
+                "or one for all, e.g. gs.shade(positions, (0, 0, 1), scene); "
+                "gs.vertex_normals(vertices, faces) computes a mesh's, and gs.shade_mesh(mesh) "
+                "lights a mesh with them"
+            )
+        return function(*args, **kwargs)
+
+    return checked
+
+
+@_names_missing_normals
 def shade(
     positions: ArrayLike,
     normals: ArrayLike,
@@ -51,10 +76,12 @@ def shade(
     rescale_normal : bool
         ``GL_RESCALE_NORMAL``: scale the transformed normals by M's rescale factor.
     colors : (..., 3) or (..., 4) array-like, optional
-        Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1).
+        Per-vertex colours for ``GL_COLOR_MATERIAL`` (a missing alpha is 1): numbers, uint8
+        divided by 255, no colour names.
     color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
         The material parameter(s) the colours replace; None (the default) stands for
-        ``"ambient_and_diffuse"`` (GL's) when `colors` is given.
+        ``"ambient_and_diffuse"`` (GL's) when `colors` is given. Names of options, here and
+        below, are case-insensitive.
     color_material_face : {"front_and_back", "front", "back"}
         The material(s) the colours replace (GL's default: both).
     accuracy : {"fast", "exact", "display"}
@@ -92,7 +119,9 @@ def shade(
     Raises
     ------
     TypeError
-        For complex, string or object arrays, a non-string name or a non-bool flag.
+        For complex, string or object arrays, a non-string name or a non-bool flag; colours
+        given by name (``colors="red"``); a call without normals, ``shade(positions, scene)``,
+        which says so.
     ValueError
         For wrong shapes, shapes that do not broadcast, unknown names, a bad `out` or one that
         shares memory with an input, or a singular, projective or non-finite `modelview`.

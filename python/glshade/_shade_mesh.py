@@ -2,12 +2,16 @@
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 from numpy.typing import ArrayLike
 
+from ._camera import Camera
+from ._framing import default_scene, frame
+from ._intake import matrix, one_of
 from ._normals import face_normals, vertex_normals
+from ._render_input import is_pair
 from ._scene import Scene
 from ._shade import shade
 from ._trimesh import mesh_arrays
@@ -20,7 +24,7 @@ def shade_mesh(
     vertices: Any,
     faces: ArrayLike | None = None,
     *,
-    scene: Scene,
+    scene: Scene | None = None,
     per: Per = "vertex",
     weighting: Weighting = "angle",
     **shade_kwargs: Any,
@@ -30,12 +34,17 @@ def shade_mesh(
     Parameters
     ----------
     vertices : (n, 3) float32 or float64, or a mesh
-        Vertex positions; or an object with ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``)
-        when `faces` is omitted.
+        Vertex positions; or, when `faces` is omitted, an object with ``.vertices`` and
+        ``.faces`` (a ``trimesh.Trimesh``) or a ``(vertices, faces)`` tuple.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle, counter-clockwise seen from the front.
-    scene : Scene
-        What lights the mesh.
+    scene : Scene, optional
+        What lights the mesh, in the coordinates it is shaded in (the mesh's own, or eye
+        coordinates with a ``modelview``). None (the default): the default scene of `render`
+        placed for this mesh: its key light and fill (directional, from the upper left and
+        lower right of the view), its material, and a local viewer outside the mesh, at the
+        eye of the camera `render` would frame it with (in front of, to the right of and
+        above the mesh's bounds), so a mesh around the origin is seen from outside.
     per : {"vertex", "face"}
         ``"vertex"``: each vertex is lit at its position with its `vertex_normals` (the colours
         a Gouraud rasteriser interpolates). ``"face"``: each triangle is lit once, at its
@@ -57,7 +66,8 @@ def shade_mesh(
     IndexError
         For a face index out of range, naming the face.
     ValueError, TypeError
-        For a bad `per` or `weighting`, wrong shapes or dtypes, or a bad `shade` keyword.
+        For a bad `per` or `weighting`, wrong shapes or dtypes, or a bad `shade` keyword; a
+        `Scene` given as `faces` (the scene is a keyword: ``shade_mesh(mesh, scene=scene)``).
 
     Examples
     --------
@@ -65,17 +75,41 @@ def shade_mesh(
     >>> v = np.array([[0, 0, -2], [1, 0, -2], [0, 1, -2]], np.float64)
     >>> gs.shade_mesh(v, [[0, 1, 2]], scene=gs.Scene(lights=[gs.Light()]), per="face")
     array([[0.84, 0.84, 0.84, 1.  ]])
+    >>> gs.shade_mesh(gs.meshes.icosphere(1)).shape  # the default scene
+    (42, 4)
     """
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
-    if per not in ("vertex", "face"):
-        raise ValueError(f"per must be 'vertex' or 'face', got {per!r}")
-    if weighting not in ("angle", "area", "uniform"):
-        raise ValueError(f"weighting must be 'angle', 'area' or 'uniform', got {weighting!r}")
+    if isinstance(faces, (Scene, Camera)):
+        raise TypeError(
+            f"shade_mesh got a {type(faces).__name__} as faces: the scene is a keyword "
+            "argument, gs.shade_mesh(mesh, scene=scene) or gs.shade_mesh(vertices, faces, "
+            "scene=scene)"
+        )
+    if scene is not None and not isinstance(scene, Scene):
+        raise TypeError(
+            f"scene must be a glshade.Scene, or None for the default lights, got {type(scene)!r}"
+        )
+    where = one_of(per, "per", ("vertex", "face"))
+    weights = cast(Weighting, one_of(weighting, "weighting", ("angle", "area", "uniform")))
+    if faces is None and is_pair(vertices):
+        vertices, faces = vertices
     v, f = mesh_arrays(vertices, faces)
-    if per == "vertex":
-        return shade(v, vertex_normals(v, f, weighting), scene, **shade_kwargs)
+    if scene is None:
+        scene = _placed_scene(v, shade_kwargs.get("modelview"))
+    if where == "vertex":
+        return shade(v, vertex_normals(v, f, weights), scene, **shade_kwargs)
     normals = face_normals(v, f)  # checks every index before the gather below
     corners = v.astype(np.float64)[f]
     centroids = ((corners[:, 0] + corners[:, 1] + corners[:, 2]) / 3.0).astype(v.dtype)
     return shade(centroids, normals, scene, **shade_kwargs)
+
+
+def _placed_scene(v: FloatArray, modelview: Any) -> Scene:
+    """The default scene with its viewer at the eye of the camera `render` would frame the
+    vertices with, in the coordinates they are shaded in (moved by `modelview` if given)."""
+    points = v.astype(np.float64)
+    if modelview is not None:
+        m = matrix(modelview, "modelview")
+        points = points @ m[:3, :3].T + m[:3, 3]
+    eye, _ = frame(points, 1.0)
+    x, y, z = eye.tolist()
+    return default_scene(viewer=(x, y, z, 1.0))

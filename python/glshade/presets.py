@@ -23,7 +23,8 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._params import real_array, rgb, scalar, vector3
+from ._intake import colors_checked
+from ._params import color_array, real_array, rgb, scalar, vector3, warn_bytes
 from ._records import ValueRecord
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
@@ -185,7 +186,7 @@ def directx11(
     Parameters
     ----------
     l_a : (3,) or (4,) float
-        The light's ambient colour.
+        The light's ambient colour. Colours are numbers in [0, 1] (uint8 is divided by 255).
     l_d : (3,) or (4,) float
         The light's diffuse colour.
     l_s : (3,) or (4,) float
@@ -212,6 +213,20 @@ def directx11(
         A scene with one light whose ambient is not attenuated (GL's att = 1 here), no global
         ambient or emission, ``specular="phong"`` with GL's gate; and ``normalize=True``, since
         the document takes n as a unit vector.
+
+    Raises
+    ------
+    TypeError
+        For a colour given by name (``l_d="white"``): the message gives its numbers; for
+        neither or both of `light_vector` and `light_position`.
+    ValueError
+        For a wrong shape, a negative `p`, or a zero `light_vector`, naming the argument.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For a colour that looks like 0-255 bytes (every value a whole number in [0, 255], the
+        largest 16 or more), naming it: colours are in [0, 1], and uint8 is divided by 255.
     """
     colors = {
         name: rgb(value, name, alpha=True)
@@ -228,23 +243,28 @@ def directx11(
     eye = vector3(eye_position, "eye_position")
     xyz, w = _one_light(light_vector, light_position, ("light_vector", "light_position"))
     where = vector3(xyz, "light_vector" if w == 0 else "light_position", nonzero=w == 0)
-    light = Light(
-        position=(*where, w), ambient=colors["l_a"], diffuse=colors["l_d"], specular=colors["l_s"]
-    )
-    material = Material(
-        ambient=colors["m_a"],
-        diffuse=colors["m_d"],
-        specular=colors["m_s"],
-        emission=_BLACK,
-        shininess=shininess,
-    )
-    scene = Scene(
-        lights=[light],
-        material=material,
-        global_ambient=_BLACK,
-        viewer=(*eye, 1.0),
-        specular="phong",
-    )
+    with colors_checked():
+        light = Light(
+            position=(*where, w),
+            ambient=colors["l_a"],
+            diffuse=colors["l_d"],
+            specular=colors["l_s"],
+        )
+        material = Material(
+            ambient=colors["m_a"],
+            diffuse=colors["m_d"],
+            specular=colors["m_s"],
+            emission=_BLACK,
+            shininess=shininess,
+        )
+        scene = Scene(
+            lights=[light],
+            material=material,
+            global_ambient=_BLACK,
+            viewer=(*eye, 1.0),
+            specular="phong",
+        )
+    warn_bytes(colors, "directx11")
     return Preset(scene, {"normalize": True})
 
 
@@ -292,7 +312,8 @@ def learnopengl(
     view_pos : (3,) float
         ``viewPos``, world space. The default is the tutorial's camera, at (0, 0, 3).
     light_color : (3,) float
-        ``lightColor``; the default is the tutorial's (1, 1, 1).
+        ``lightColor``; the default is the tutorial's (1, 1, 1). Colours are numbers in
+        [0, 1] (uint8 is divided by 255).
     object_color : (3,) float
         ``objectColor``; the default is the tutorial's (1, 0.5, 0.31).
     ambient_strength : float
@@ -313,6 +334,21 @@ def learnopengl(
         ``specularStrength * lightColor``; every material colour ``objectColor``; a viewer at
         ``viewPos``; ``specular="phong"``, ``specular_gate=False``; and ``normalize=True``,
         ``modelview=model``.
+
+    Raises
+    ------
+    TypeError
+        For a colour given by name (``object_color="orange"``): the message gives its numbers.
+    ValueError
+        For a wrong shape, a negative `shininess`, or a `model` that is not affine and
+        invertible, naming the argument.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For `light_color` or `object_color` looking like 0-255 bytes (every value a whole
+        number in [0, 255], the largest 16 or more): colours are in [0, 1], and uint8 is
+        divided by 255.
     """
     light = rgb(light_color, "light_color")
     obj = rgb(object_color, "object_color")
@@ -322,23 +358,25 @@ def learnopengl(
     position = vector3(light_pos, "light_pos")
     viewer = vector3(view_pos, "view_pos")
     matrix = _model_matrix(model)
-    scene = Scene(
-        lights=[
-            Light(
-                position=(*position, 1.0),
-                ambient=_BLACK,
-                diffuse=light,
-                specular=strength * light,
-            )
-        ],
-        material=Material(
-            ambient=obj, diffuse=obj, specular=obj, emission=_BLACK, shininess=exponent
-        ),
-        global_ambient=ambient * light,
-        viewer=(*viewer, 1.0),
-        specular="phong",
-        specular_gate=False,
-    )
+    with colors_checked():
+        scene = Scene(
+            lights=[
+                Light(
+                    position=(*position, 1.0),
+                    ambient=_BLACK,
+                    diffuse=light,
+                    specular=strength * light,
+                )
+            ],
+            material=Material(
+                ambient=obj, diffuse=obj, specular=obj, emission=_BLACK, shininess=exponent
+            ),
+            global_ambient=ambient * light,
+            viewer=(*viewer, 1.0),
+            specular="phong",
+            specular_gate=False,
+        )
+    warn_bytes({"light_color": light, "object_color": obj}, "learnopengl")
     kwargs: dict[str, Any] = {"normalize": True}
     if matrix is not None:
         kwargs["modelview"] = matrix
@@ -349,7 +387,7 @@ def _attenuation(value: Any) -> tuple[float, float, float]:
     if value is None:
         return (1.0, 0.0, 0.0)
     if isinstance(value, str):
-        if value != "inverse_square":
+        if value.lower() != "inverse_square":
             raise ValueError(
                 f"attenuation must be None, 'inverse_square' or (a0, a1, a2), got {value!r}"
             )
@@ -396,9 +434,9 @@ def phong_illumination(
     n : float
         The glossiness exponent, >= 0.
     I_a : float or (3,) float
-        The ambient light's intensity (a number is grey).
+        The ambient light's intensity (a number is grey); uint8 is divided by 255.
     I_l : float, (3,) or (L, 3) float
-        The intensity of the light, or one row per light.
+        The intensity of the light, or one row per light; uint8 is divided by 255.
     viewer_position : (3,) float
         The viewer: ``V = normalize(viewer_position - position)``.
     light_position : (3,) or (L, 3) float, optional
@@ -407,7 +445,8 @@ def phong_illumination(
         Infinitely distant lights: L, the direction towards the light (normalised here); never
         attenuated. Give exactly one of `light_position` and `light_direction`.
     attenuation : None, "inverse_square" or (a0, a1, a2)
-        Radial attenuation of point lights: none, ``1 / d^2``, or ``1 / (a0 + a1 d + a2 d^2)``.
+        Radial attenuation of point lights: none, ``1 / d^2`` (the name in any case), or
+        ``1 / (a0 + a1 d + a2 d^2)``.
     spot_direction : (3,) or (L, 3) float, optional
         Angular attenuation: the cone's axis (from the light outwards). A point inside the cone
         gets ``(V_obj . V_light)^a_l``, V_obj the unit vector from the light to the point;
@@ -424,13 +463,29 @@ def phong_illumination(
         Material ambient, diffuse and specular ``k_a``, ``k_d``, ``k_s`` (grey), global
         ambient ``I_a``, lights of diffuse and specular ``I_l``, a viewer at `viewer_position`,
         ``specular="phong"`` with GL's gate; and ``normalize=True``.
+
+    Raises
+    ------
+    TypeError
+        For `I_a` or `I_l` given by a colour name (the message gives its numbers); for
+        neither or both of `light_position` and `light_direction`.
+    ValueError
+        For a wrong shape, a negative coefficient or exponent, a spot cone outside [0, 90]
+        degrees, or an unknown `attenuation`, naming the argument.
+
+    Warns
+    -----
+    ColorRangeWarning
+        For `I_a`, or an unattenuated `I_l`, looking like 0-255 bytes (every value a whole
+        number in [0, 255], the largest 16 or more): with attenuation, `I_l` is an intensity,
+        which may be large.
     """
     ka, kd, ks = (
         scalar(v, name, minimum=0.0) for v, name in ((k_a, "k_a"), (k_d, "k_d"), (k_s, "k_s"))
     )
     exponent = scalar(n, "n", minimum=0.0)
     ambient = rgb(I_a, "I_a", grey=True)
-    intensity = real_array(I_l, "I_l")
+    intensity = color_array(I_l, "I_l")
     if intensity.ndim == 0:
         intensity = np.full(3, float(intensity))
     elif intensity.shape[-1:] != (3,) or intensity.ndim > 2:
@@ -468,28 +523,35 @@ def phong_illumination(
             "spot_exponent": exp,
         }
     homogeneous = np.concatenate([where, np.full((*where.shape[:-1], 1), w)], axis=-1)
-    lights = Lights(
-        position=homogeneous,
-        ambient=_BLACK,
-        diffuse=intensity,
-        specular=intensity,
-        constant_attenuation=k0,
-        linear_attenuation=k1,
-        quadratic_attenuation=k2,
-        **spot,
-    )
-    material = Material(
-        ambient=(ka, ka, ka),
-        diffuse=(kd, kd, kd),
-        specular=(ks, ks, ks),
-        emission=_BLACK,
-        shininess=exponent,
-    )
-    scene = Scene(
-        lights=lights,
-        material=material,
-        global_ambient=ambient,
-        viewer=(*viewer, 1.0),
-        specular="phong",
-    )
+    # k_a, k_d and k_s are coefficients, not colours: their grey material is not checked.
+    with colors_checked():
+        lights = Lights(
+            position=homogeneous,
+            ambient=_BLACK,
+            diffuse=intensity,
+            specular=intensity,
+            constant_attenuation=k0,
+            linear_attenuation=k1,
+            quadratic_attenuation=k2,
+            **spot,
+        )
+        material = Material(
+            ambient=(ka, ka, ka),
+            diffuse=(kd, kd, kd),
+            specular=(ks, ks, ks),
+            emission=_BLACK,
+            shininess=exponent,
+        )
+        scene = Scene(
+            lights=lights,
+            material=material,
+            global_ambient=ambient,
+            viewer=(*viewer, 1.0),
+            specular="phong",
+        )
+    colors = {"I_a": ambient}
+    # I_l is a colour where nothing attenuates it (directions never are); else an intensity.
+    if w == 0 or (k0, k1, k2) == (1.0, 0.0, 0.0):
+        colors["I_l"] = intensity
+    warn_bytes(colors, "phong_illumination")
     return Preset(scene, {"normalize": True})

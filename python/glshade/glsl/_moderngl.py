@@ -5,16 +5,26 @@ arguments and results. moderngl is an optional dependency, imported on first use
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, Literal, cast, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from .._image import Image
-from .._intake import integer, rgba, rows, vertices
+from .._intake import (
+    color,
+    integer,
+    one_of,
+    rgba,
+    rows,
+    transform,
+    vertices,
+    warn_if_bytes,
+)
 from .._records import ValueRecord
 from .._render_input import render_input
 from .._scene import Scene
+from .._transfer import Transfer, apply_transfer, transfer_name
 from .._typing import Cull, Face, Shading, Space
 from ._shaders import Shaders, compute_shader, raster_shaders
 
@@ -252,7 +262,7 @@ def rasterize(
     color_material_face : {"front_and_back", "front", "back"}
         As for `raster_shaders` and `gs.render`.
     cull : {None, "back", "front", "front_and_back"}
-        Which windings to discard.
+        Which windings to discard; names are case-insensitive.
     background : (3,) or (4,) float
         The clear colour of `Targets.color`.
     context : moderngl.Context, optional
@@ -265,6 +275,7 @@ def rasterize(
         convention for flat shading.
     """
     moderngl = _moderngl()
+    culled = None if cull is None else one_of(cull, "cull", ("back", "front", "front_and_back"))
     ctx = context if context is not None else _default_context()
     p = rows(positions, "positions").astype(np.float32)
     attributes = np.ones((len(p), 10), np.float32)
@@ -297,9 +308,9 @@ def rasterize(
     fbo = ctx.framebuffer(color_attachments=textures, depth_attachment=depth)
     try:
         fbo.use()
-        ctx.enable_only(moderngl.DEPTH_TEST | (moderngl.CULL_FACE if cull else 0))
-        if cull:
-            ctx.cull_face = cull
+        ctx.enable_only(moderngl.DEPTH_TEST | (moderngl.CULL_FACE if culled else 0))
+        if culled:
+            ctx.cull_face = culled
         ctx.depth_func = "<"
         ctx.provoking_vertex = moderngl.LAST_VERTEX_CONVENTION
         fbo.clear(0.0, 0.0, 0.0, 0.0, depth=1.0)
@@ -319,6 +330,78 @@ def rasterize(
     return Targets(images[0], images[1], images[2], images[3], images[4], z)
 
 
+@overload
+def render(
+    vertices: Any,
+    faces: Any = ...,
+    scene: Any = ...,
+    camera: Any = ...,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: Any = ...,
+    color_material: str | None = ...,
+    color_material_face: Face = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    lights_in: Space = ...,
+    transfer: Transfer = ...,
+    depth: Literal[False] = ...,
+    context: Any = ...,
+) -> Image: ...
+@overload
+def render(
+    vertices: Any,
+    faces: Any = ...,
+    scene: Any = ...,
+    camera: Any = ...,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: Any = ...,
+    color_material: str | None = ...,
+    color_material_face: Face = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    lights_in: Space = ...,
+    transfer: Transfer = ...,
+    depth: Literal[True],
+    context: Any = ...,
+) -> tuple[Image, NDArray[np.float32]]: ...
+@overload
+def render(
+    vertices: Any,
+    faces: Any = ...,
+    scene: Any = ...,
+    camera: Any = ...,
+    *,
+    width: int = ...,
+    height: int = ...,
+    shading: Shading = ...,
+    normals: ArrayLike | None = ...,
+    colors: Any = ...,
+    color_material: str | None = ...,
+    color_material_face: Face = ...,
+    model: ArrayLike | None = ...,
+    normalize: bool = ...,
+    rescale_normal: bool = ...,
+    cull: Cull | None = ...,
+    background: ArrayLike = ...,
+    lights_in: Space = ...,
+    transfer: Transfer = ...,
+    depth: bool,
+    context: Any = ...,
+) -> Image | tuple[Image, NDArray[np.float32]]: ...
 def render(
     vertices: Any,
     faces: Any = None,
@@ -338,6 +421,7 @@ def render(
     cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
     lights_in: Space = "eye",
+    transfer: Transfer = "linear",
     depth: bool = False,
     context: Any = None,
 ) -> Image | tuple[Image, NDArray[np.float32]]:
@@ -346,24 +430,29 @@ def render(
 
     The model-view transform of positions and normals is applied here in float64 (the shaders
     get eye coordinates); flat shading gets unshared vertices carrying their face's normal, so
-    that GL's provoking vertex lights each face with it, as `gs.render` does.
+    that GL's provoking vertex lights each face with it, as `gs.render` does. Without a scene
+    or a camera, `gs.render`'s defaults: ``gs.glsl.render(mesh)`` draws what
+    ``gs.render(mesh)`` draws, at any `width` and `height`.
 
     Parameters
     ----------
     vertices : (n, 3) float, or a mesh
-        As for `gs.render`.
+        As for `gs.render`: positions, or a ``trimesh.Trimesh``, ``trimesh.Scene`` or
+        ``(vertices, faces)`` tuple with `faces` omitted.
     faces : (m, 3) int, optional
         As for `gs.render`.
-    scene : Scene
-        As for `gs.render`.
-    camera : Camera
-        As for `gs.render`.
+    scene : Scene, optional
+        As for `gs.render`; None (the default) is `gs.render`'s default scene: a key light and
+        a dim fill fixed in the world, a light grey material.
+    camera : Camera, optional
+        As for `gs.render`; None (the default) is the camera `gs.render` frames the mesh's
+        bounds with (placed by `model`), for an image of `width` x `height`.
     width : int
         As for `gs.render`.
     height : int
         As for `gs.render`.
     shading : {"phong", "gouraud", "flat"}
-        As for `gs.render`.
+        As for `gs.render`; this name and the others below are case-insensitive.
     normals : (n, 3) or (m, 3) float, optional
         As for `gs.render`.
     colors : (n, 3) or (n, 4) float or uint8, optional, or False
@@ -384,6 +473,8 @@ def render(
         As for `gs.render`.
     lights_in : {"eye", "world"}
         As for `gs.render`.
+    transfer : {"linear", "srgb", "gamma2.2"}
+        As for `gs.render`: the encoding of the image's RGB, applied to GL's float32 result.
     depth : bool
         As for `gs.render`.
     context : moderngl.Context, optional
@@ -393,21 +484,42 @@ def render(
     -------
     Image, or (Image, depth) with ``depth=True``
         (height, width, 4) float32 RGBA, row 0 at the top; depth (height, width) in [0, 1].
+
+    Raises
+    ------
+    ImportError
+        Without moderngl.
+    ValueError, TypeError
+        As `gs.render` raises them: wrong shapes, dtypes, names, sizes or matrices, a colour
+        given by name.
+
+    Warns
+    -----
+    ColorRangeWarning
+        As `gs.render`: for a `background` that looks like 0-255 bytes.
     """
+    w = integer(width, "width", 1, 16384)
+    h = integer(height, "height", 1, 16384)
+    mode = one_of(shading, "shading", ("flat", "gouraud", "phong"))
+    encoding = transfer_name(transfer)
+    m = transform(model, "model")
     given = render_input(
         vertices,
         faces,
         scene,
         camera,
-        shading=shading,
+        shading=mode,
         normals=normals,
         colors=colors,
         color_material=color_material,
         lights_in=lights_in,
+        model=m,
+        width=w,
+        height=h,
     )
+    warn_if_bytes(color(background, "background"), "background", "render")
     v = given.vertices.astype(np.float64)
     f = given.faces
-    m = np.eye(4) if model is None else np.asarray(model, np.float64)
     modelview = given.camera.view @ m
     linear = modelview[:3, :3]
     normal_matrix = np.linalg.inv(linear).T
@@ -417,7 +529,7 @@ def render(
     colors_given = given.colors
     from .._normals import face_normals, vertex_normals
 
-    if shading == "flat":
+    if mode == "flat":
         n = face_normals(v, f) if given.normals is None else given.normals
         eye, n = eye[f].reshape(-1, 3), np.repeat(n, 3, axis=0)
         if colors_given is not None:
@@ -425,8 +537,6 @@ def render(
         f = np.arange(len(eye), dtype=np.int64).reshape(-1, 3)
     else:
         n = vertex_normals(v, f) if given.normals is None else given.normals
-    w = integer(width, "width", 1, 16384)
-    h = integer(height, "height", 1, 16384)
     targets = rasterize(
         eye,
         np.asarray(n, np.float64) @ normal_matrix.T,
@@ -435,7 +545,7 @@ def render(
         w,
         h,
         given.scene,
-        shading=shading,
+        shading=cast(Shading, mode),
         normalize=normalize,
         colors=colors_given,
         color_material=given.color_material,
@@ -444,5 +554,5 @@ def render(
         background=background,
         context=context,
     )
-    image = targets.color.view(Image)
+    image = apply_transfer(targets.color, encoding).view(Image)
     return (image, targets.depth) if depth else image

@@ -41,8 +41,8 @@ def _parser() -> argparse.ArgumentParser:
     run.add_argument(
         "--output",
         default="glshade-demo.png",
-        help="PNG path of the shaded sphere (default ./glshade-demo.png); the renders go beside "
-        "it with -flat, -gouraud and -phong added to the name",
+        help="PNG path of the shaded sphere (default ./glshade-demo.png), its folder created "
+        "if missing; the renders go beside it with -flat, -gouraud and -phong added to the name",
     )
     rep = commands.add_parser(
         "report",
@@ -153,4 +153,12 @@ def main(argv: Sequence[str] | None = None) -> int:
         return bench.bench_normals(args.faces, args.repeat, args.settle, args.json)
     from .demo import demo
 
+    folder = Path(args.output).parent
+    try:
+        # Before the work, not after it: a missing folder is made, one that cannot be is named.
+        folder.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        in_the_way = isinstance(error, (FileExistsError, NotADirectoryError))
+        reason = "a file is in the way" if in_the_way else error.strerror
+        parser.error(f"--output: cannot create the folder {folder} ({reason}: {error.filename})")
     return demo(args.size, args.repeat, args.output)

@@ -125,6 +125,11 @@ def render_modes(scene: gs.Scene, size: int, repeat: int) -> dict[str, gs.Image]
 
 
 def demo(size: int, repeat: int, output: str) -> int:
+    """Runs the demo: prints the timings of both parts and writes the sphere's image to
+    `output` and the three renders beside it; its exit status."""
+    path = Path(output)
+    # Made (or refused) before the minutes of work, not after: a missing folder is created.
+    path.parent.mkdir(parents=True, exist_ok=True)
     scene = demo_scene()
     print(f"glshade {gs.__version__}: the OpenGL 2.1 lighting equation, per vertex, in parallel")
     shininess = scene.material.shininess
@@ -134,7 +139,6 @@ def demo(size: int, repeat: int, output: str) -> int:
     difference = np.abs(images["gouraud"] - images["phong"])[..., :3]
     print(f"\nGouraud against Phong: max |difference| {difference.max():.3f}", end="")
     print(f", mean {difference.mean():.4f}")
-    path = Path(output)
     written = [sphere.view(gs.Image).save(path)]
     for shading, image in images.items():
         written.append(image.save(path.with_name(f"{path.stem}-{shading}{path.suffix}")))

@@ -688,7 +688,7 @@ BAD: list[tuple[Callable[[], object], type[Exception], str]] = [
             **{**DX, "m_s": "red"}, p=8, eye_position=(0, 0, 1), light_vector=(0, 0, 1)
         ),
         TypeError,
-        "m_s must be real numbers",
+        "m_s takes numbers, not a colour name: got 'red'",
     ),
     (lambda: P.learnopengl(view_pos=(0, 0)), ValueError, "view_pos must have shape (3,), got (2,)"),
     (
@@ -820,7 +820,7 @@ BAD: list[tuple[Callable[[], object], type[Exception], str]] = [
         "face 0 refers to vertex 5",
     ),
     (
-        lambda: gs.shade_mesh(np.zeros((3, 3)), [[0, 1, 2]], scene=None),
+        lambda: gs.shade_mesh(np.zeros((3, 3)), [[0, 1, 2]], scene="sun"),  # type: ignore[arg-type]
         TypeError,
         "scene must be a glshade.Scene",
     ),
