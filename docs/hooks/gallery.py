@@ -106,14 +106,18 @@ def render_output(output: Any, name: str, stem: str, images: dict[str, bytes]) -
     if output.output_type not in ("display_data", "execute_result"):
         return []
     data = output.get("data", {})
+    # Jupyter's own order of preference: HTML, then images, then text.
+    if "text/html" in data:
+        return [f'<div class="gallery-output" markdown="0">\n{data["text/html"]}\n</div>']
     if "image/png" in data:
         images[f"{name}.png"] = base64.b64decode(data["image/png"])
-        return [f"![output]({stem}/{name}.png)"]
+        # The display size an output asks for (gs.Image's display_width), as Jupyter honours it.
+        width = output.get("metadata", {}).get("image/png", {}).get("width")
+        size = f'{{ width="{int(width)}" }}' if width else ""
+        return [f"![output]({stem}/{name}.png){size}"]
     if "image/svg+xml" in data:
         images[f"{name}.svg"] = data["image/svg+xml"].encode()
         return [f"![output]({stem}/{name}.svg)"]
-    if "text/html" in data:
-        return [f'<div class="gallery-output" markdown="0">\n{data["text/html"]}\n</div>']
     if "text/plain" in data:
         return [fence(data["text/plain"], "text")]
     return []
