@@ -12,7 +12,9 @@ from numpy.typing import ArrayLike, NDArray
 
 from .._image import Image
 from .._intake import (
+    array,
     color,
+    color_values,
     integer,
     one_of,
     rgba,
@@ -254,9 +256,9 @@ def rasterize(
     normalize : bool
         As for `raster_shaders` and `gs.render` (normals already in eye space: a rescale
         factor belongs in them).
-    colors : (n, 3) or (n, 4) float, optional
-        Per-vertex colours for `color_material`, used as given (rounded to float32; unlike
-        `gs.render`, uint8 colours are not scaled).
+    colors : (n, 3) or (n, 4) float or uint8, optional
+        Per-vertex colours for `color_material`, rounded to float32; uint8 colours are divided
+        by 255, as in `gs.shade` and `gs.render`.
     color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
         As for `raster_shaders` and `gs.render`.
     color_material_face : {"front_and_back", "front", "back"}
@@ -282,7 +284,8 @@ def rasterize(
     attributes[:, 0:3] = p
     attributes[:, 3:6] = rows(normals, "normals").astype(np.float32)
     if colors is not None:
-        given = rows(colors, "colors", None, (3, 4))
+        # uint8 colours are GL's normalised bytes here too, as in gs.shade and gs.render.
+        given = rows(color_values(array(colors, "colors")), "colors", None, (3, 4))
         attributes[:, 6 : 6 + given.shape[1]] = given
         color_material = color_material or "ambient_and_diffuse"
     shaders = raster_shaders(

@@ -89,3 +89,22 @@ def test_glsl_cull_and_transfer_names_in_any_case() -> None:
     expected = np.where(x <= 0.0031308, 12.92 * x, 1.055 * np.abs(x) ** (1 / 2.4) - 0.055)
     np.testing.assert_allclose(encoded[..., :3], expected, atol=1e-6)
     np.testing.assert_array_equal(encoded[..., 3], linear[..., 3])
+
+
+def test_rasterize_reads_uint8_colours_as_normalised_bytes() -> None:
+    """uint8 vertex colours are GL's normalised bytes in `gs.glsl.rasterize` too: the same
+    targets as the colours divided by 255."""
+    context = glpeers.moderngl_context()
+    vertices, faces = gs.meshes.icosphere(2)
+    positions = vertices + np.array([0.0, 0.0, -4.0])
+    projection = gs.Camera.look_at((0, 0, 0), (0, 0, -1), fovy=40).projection_matrix(64, 48)
+    scene = gs.Scene(lights=[gs.Light(position=(1, 1, 1, 0))])
+    bytes8 = np.random.default_rng(5).integers(0, 256, (len(vertices), 4), dtype=np.uint8)
+    drawn = [
+        gs.glsl.rasterize(
+            positions, vertices, faces, projection, 64, 48, scene, colors=c, context=context
+        ).color
+        for c in (bytes8, bytes8 / 255.0)
+    ]
+    assert (drawn[0][..., 3] > 0).mean() > 0.1
+    np.testing.assert_array_equal(drawn[0], drawn[1])
