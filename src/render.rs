@@ -23,7 +23,7 @@ use crate::errors::stop::Stop;
 use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::prepare::ShadeOptions;
+use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
@@ -91,6 +91,8 @@ pub struct RenderOptions {
     pub rescale_normal: bool,
     /// `GL_COLOR_MATERIAL`, with [`Mesh::colors`].
     pub color_material: Option<ColorMaterial>,
+    /// Whether the colours (the equation's and the colour sum) are clamped to [0, 1].
+    pub clamp: ColorClamp,
 }
 
 impl Default for RenderOptions {
@@ -108,6 +110,7 @@ impl Default for RenderOptions {
             normalize: true,
             rescale_normal: false,
             color_material: None,
+            clamp: ColorClamp::On,
         }
     }
 }
@@ -247,6 +250,7 @@ pub fn render<T: Real>(
         normalize: options.normalize,
         rescale_normal: options.rescale_normal,
         color_material: options.color_material,
+        clamp: options.clamp,
         ..ShadeOptions::default()
     };
     // A call on no vertices checks the options against the scene before any work is done.

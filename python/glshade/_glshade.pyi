@@ -96,6 +96,7 @@ def shade(
     color_material_face: str,
     accuracy: str,
     strict: bool,
+    clamp: bool,
     out: NDArray[np.floating[Any]] | None,
 ) -> NDArray[np.floating[Any]]: ...
 def stream(
@@ -113,6 +114,7 @@ def describe(
     color_material_face: str,
     accuracy: str,
     strict: bool,
+    clamp: bool,
     dtype: str,
 ) -> str: ...
 def face_normals(
@@ -149,4 +151,5 @@ def render(
     rescale_normal: bool,
     cull: str,
     background: NDArray[np.float64],
+    clamp: bool,
 ) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...

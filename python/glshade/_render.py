@@ -51,6 +51,7 @@ def render(
     background: ArrayLike = ...,
     lights_in: Space = ...,
     transfer: Transfer = ...,
+    clamp: bool = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
@@ -74,6 +75,7 @@ def render(
     background: ArrayLike = ...,
     lights_in: Space = ...,
     transfer: Transfer = ...,
+    clamp: bool = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
@@ -97,6 +99,7 @@ def render(
     background: ArrayLike = ...,
     lights_in: Space = ...,
     transfer: Transfer = ...,
+    clamp: bool = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
@@ -119,6 +122,7 @@ def render(
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
     lights_in: Space = "eye",
     transfer: Transfer = "linear",
+    clamp: bool = True,
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -197,6 +201,10 @@ def render(
         ``GL_FRAMEBUFFER_SRGB``; ``"srgb"`` applies `srgb_encode` (IEC 61966-2-1), the
         brightness pyrender's, three.js's and Blender's sRGB output shows; ``"gamma2.2"``
         applies ``x^(1/2.2)``. Names are case-insensitive. The background is encoded too.
+    clamp : bool
+        GL's clamp of the colours to [0, 1] (the default). False keeps what the lighting
+        equation and the colour sum give, values above 1 included (high dynamic range), as
+        `shade` with ``clamp=False`` does; the background and alpha as given.
     depth : bool
         Also return the depth buffer.
 
@@ -274,6 +282,7 @@ def render(
         rescale_normal=flag(rescale_normal, "rescale_normal"),
         cull="none" if cull is None else choice(cull, "cull"),
         background=np.array(clear),
+        clamp=flag(clamp, "clamp"),
     )
     result = apply_transfer(image, encoding).view(Image)
     return (result, z) if depth else result

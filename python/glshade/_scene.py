@@ -569,6 +569,7 @@ class Scene:
         color_material_face: str = "front_and_back",
         accuracy: Accuracy = "fast",
         strict: bool = False,
+        clamp: bool = True,
     ) -> str:
         """What `shade` computes for this scene, in one line.
 
@@ -597,6 +598,8 @@ class Scene:
             As for `shade`.
         strict : bool
             As for `shade`.
+        clamp : bool
+            As for `shade`: without the clamp the line ends "unclamped (high dynamic range)".
 
         Returns
         -------
@@ -626,6 +629,7 @@ class Scene:
             color_material_face=choice(color_material_face, "color_material_face"),
             accuracy=choice(accuracy, "accuracy"),
             strict=flag(strict, "strict"),
+            clamp=flag(clamp, "clamp"),
             dtype="float64" if name == "float64" else "float32",
         )
 

@@ -53,6 +53,7 @@ def shade(
     color_material_face: Face = "front_and_back",
     accuracy: Accuracy = "fast",
     strict: bool = False,
+    clamp: bool = True,
     out: FloatArray | None = None,
 ) -> FloatArray:
     """Light vertices with OpenGL's fixed-function lighting equation (GL 2.1 section 2.14.1).
@@ -92,6 +93,11 @@ def shade(
         (docs/pages/guide/accuracy.md) states the error bound of each.
     strict : bool
         Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
+    clamp : bool
+        GL's clamp of every output colour to [0, 1] (the default). False returns the sums as
+        they are, for high dynamic range: values above 1 where the terms add up beyond it,
+        the primary and the secondary colour each unclamped with ``separate_specular``; the
+        same values as with the clamp wherever those lie inside [0, 1], and NaN rows as with it.
     out : ndarray, optional
         The array to write the result into: exactly the result's dtype and shape, C-contiguous,
         aligned, writeable, and sharing no memory with an input.
@@ -150,7 +156,7 @@ def shade(
         options = {
             "modelview": modelview, "normalize": normalize, "rescale_normal": rescale_normal,
             "color_material": color_material, "color_material_face": color_material_face,
-            "accuracy": accuracy, "strict": strict,
+            "accuracy": accuracy, "strict": strict, "clamp": clamp,
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
@@ -171,6 +177,7 @@ def shade(
         color_material_face=choice(color_material_face, "color_material_face"),
         accuracy=choice(accuracy, "accuracy"),
         strict=flag(strict, "strict"),
+        clamp=flag(clamp, "clamp"),
         out=out,
     )
     return result

@@ -21,7 +21,7 @@ use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
 use crate::lighting::plan::{LightKind, Plan};
 use crate::lighting::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
-use crate::lighting::prepare::{Prepared, PreparedLight, Source, Viewer};
+use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Viewer};
 use crate::lighting::shape::{flag, General, Shape};
 use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
@@ -220,15 +220,30 @@ fn clamp01<V: Lanes>(x: V, finite: V::Mask) -> V {
     )
 }
 
-/// An output colour: `rgb` and `alpha`, clamped.
+/// `x` as it is where `finite` (high dynamic range), NaN elsewhere; + 0 turns −0 into +0.
 #[inline(always)]
-fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask) -> [V; 4] {
-    [
-        clamp01(rgb.x, finite),
-        clamp01(rgb.y, finite),
-        clamp01(rgb.z, finite),
-        clamp01(alpha, finite),
-    ]
+fn unclamped<V: Lanes>(x: V, finite: V::Mask) -> V {
+    V::select(finite, x + V::splat(V::T::ZERO), V::splat(V::T::NAN))
+}
+
+/// An output colour: `rgb` and `alpha`, clamped unless `clamp` is off (one branch per block).
+#[inline(always)]
+fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] {
+    if clamp {
+        [
+            clamp01(rgb.x, finite),
+            clamp01(rgb.y, finite),
+            clamp01(rgb.z, finite),
+            clamp01(alpha, finite),
+        ]
+    } else {
+        [
+            unclamped(rgb.x, finite),
+            unclamped(rgb.y, finite),
+            unclamped(rgb.z, finite),
+            unclamped(alpha, finite),
+        ]
+    }
 }
 
 /// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
@@ -647,14 +662,18 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
             base
         };
         let lit = d.mul_add(diffuse, base);
+        let clamp = prepared.clamp == ColorClamp::On;
         if flag(S::KNOWN.separate_specular, prepared.separate_specular) {
             [
-                emit(lit, alpha, finite),
-                emit(s.mul_elements(specular), V::splat(T::ONE), finite),
+                emit(lit, alpha, finite, clamp),
+                emit(s.mul_elements(specular), V::splat(T::ONE), finite, clamp),
             ]
         } else {
             let zero = V::splat(T::ZERO);
-            [emit(s.mul_add(specular, lit), alpha, finite), [zero; 4]]
+            [
+                emit(s.mul_add(specular, lit), alpha, finite, clamp),
+                [zero; 4],
+            ]
         }
     }
 }

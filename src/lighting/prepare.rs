@@ -309,6 +309,20 @@ pub struct ShadeOptions {
     /// GL's parameter ranges: reject shininess and spot exponents above 128 (GL's
     /// `GL_INVALID_VALUE`), which glshade otherwise accepts.
     pub strict: bool,
+    /// Whether the output colours are clamped to [0, 1] (a row with a non-finite input is NaN
+    /// either way).
+    pub clamp: ColorClamp,
+}
+
+/// `GL_CLAMP_VERTEX_COLOR` (`ARB_color_buffer_float`, GL 3.0): whether the lit colours are
+/// clamped to [0, 1]. GL clamps by default; off keeps the sums, for high dynamic range.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ColorClamp {
+    /// Clamped to [0, 1], GL 2.1's only behaviour.
+    #[default]
+    On,
+    /// The sums as they are: values above 1 where the terms add up beyond it.
+    Off,
 }
 
 /// A scene and its options, prepared for one kernel type.
@@ -338,6 +352,8 @@ pub struct Prepared<T: Real> {
     pub accuracy: Accuracy,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,
+    /// Whether the outputs are clamped to [0, 1].
+    pub clamp: ColorClamp,
 }
 
 /// The point (x, y, z)/w of a homogeneous `h` with w != 0, in the kernel's type.
@@ -471,6 +487,7 @@ impl<T: Real> Prepared<T> {
             specular_gate: scene.specular_gate,
             accuracy: options.accuracy,
             color_material: options.color_material,
+            clamp: options.clamp,
         })
     }
 }

@@ -15,7 +15,7 @@ use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene, ValidScene};
 use crate::lighting::kernel::{Block, Kernel, SideColors};
 use crate::lighting::plan::Plan;
-use crate::lighting::prepare::{Accuracy, Prepared, ShadeOptions};
+use crate::lighting::prepare::{Accuracy, ColorClamp, Prepared, ShadeOptions};
 use crate::lighting::shape::{on_shape, OnShape, Shape};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
@@ -490,8 +490,13 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
         Accuracy::Exact => "exact",
         Accuracy::Display => Display::NAME,
     };
+    let range = if options.clamp == ColorClamp::Off {
+        "; unclamped (high dynamic range)"
+    } else {
+        ""
+    };
     Ok(format!(
-        "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; {plan}",
+        "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; {plan}{range}",
         bytes * 8,
         isa.name(),
     ))
@@ -531,6 +536,28 @@ mod tests {
             lights: vec![Light::default()],
             ..Scene::default()
         }
+    }
+
+    #[test]
+    fn without_the_clamp_the_sums_exceed_one_in_both_types() {
+        // Three headlights facing the normal: 0.04 + 3 · 0.8 in each channel, alpha 1.
+        let scene = Scene {
+            lights: vec![Light::default(); 3],
+            ..Scene::default()
+        };
+        let off = ShadeOptions {
+            clamp: ColorClamp::Off,
+            ..ShadeOptions::default()
+        };
+        let wide = shade_one::<f64>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &off);
+        assert!(close(&wide, &[2.44, 2.44, 2.44, 1.0]), "{wide:?}");
+        let narrow = shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &off);
+        assert!(narrow
+            .iter()
+            .zip(&wide)
+            .all(|(x, y)| (f64::from(*x) - y).abs() < 1e-6));
+        let clamped = shade_one::<f64>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default());
+        assert_eq!(clamped, [1.0; 4]);
     }
 
     #[test]

@@ -12,6 +12,7 @@ use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use super::{faces, matrix};
 use crate::gl::material::ColorMaterial;
+use crate::lighting::prepare::ColorClamp;
 use crate::numbers::real::Real;
 use crate::render::camera::Camera;
 use crate::render::mesh::Mesh;
@@ -62,7 +63,7 @@ fn render_typed<'py, T: Element + Real>(
 #[pyfunction]
 #[pyo3(signature = (
     vertices, faces, scene, *, view, projection, model, width, height, shading, normals, colors,
-    color_material, color_material_face, normalize, rescale_normal, cull, background
+    color_material, color_material_face, normalize, rescale_normal, cull, background, clamp
 ))]
 pub fn render<'py>(
     py: Python<'py>,
@@ -83,6 +84,7 @@ pub fn render<'py>(
     rescale_normal: bool,
     cull: &str,
     background: PyReadonlyArray1<'py, f64>,
+    clamp: bool,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let camera = Camera {
         view: matrix(&view, "view")?,
@@ -106,6 +108,11 @@ pub fn render<'py>(
             .map(|mode| ColorMaterial::parse(mode, color_material_face))
             .transpose()
             .map_err(to_pyerr)?,
+        clamp: if clamp {
+            ColorClamp::On
+        } else {
+            ColorClamp::Off
+        },
     };
     let scene = scene.get();
     match float_of(vertices, "vertices")? {

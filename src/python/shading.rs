@@ -9,7 +9,7 @@ use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use crate::gl::material::ColorMaterial;
-use crate::lighting::prepare::{Accuracy, ShadeOptions};
+use crate::lighting::prepare::{Accuracy, ColorClamp, ShadeOptions};
 use crate::numbers::real::Real;
 
 /// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
@@ -74,6 +74,7 @@ fn options_from(
     color_material_face: &str,
     accuracy: &str,
     strict: bool,
+    clamp: bool,
 ) -> PyResult<ShadeOptions> {
     let modelview = modelview.map(|m| matrix(m, "modelview")).transpose()?;
     let color_material = color_material
@@ -87,6 +88,11 @@ fn options_from(
         color_material,
         accuracy: Accuracy::parse(accuracy).map_err(to_pyerr)?,
         strict,
+        clamp: if clamp {
+            ColorClamp::On
+        } else {
+            ColorClamp::Off
+        },
     })
 }
 
@@ -97,7 +103,7 @@ fn options_from(
 #[pyfunction]
 #[pyo3(signature = (
     positions, normals, scene, *, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face, accuracy, strict, out
+    color_material_face, accuracy, strict, clamp, out
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
@@ -112,6 +118,7 @@ pub fn shade<'py>(
     color_material_face: &str,
     accuracy: &str,
     strict: bool,
+    clamp: bool,
     out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let options = options_from(
@@ -122,6 +129,7 @@ pub fn shade<'py>(
         color_material_face,
         accuracy,
         strict,
+        clamp,
     )?;
     let scene = scene.get();
     match float_of(positions, "positions")? {
@@ -135,7 +143,7 @@ pub fn shade<'py>(
 #[pyfunction]
 #[pyo3(signature = (
     scene, *, modelview, normalize, rescale_normal, color_material, color_material_face, accuracy,
-    strict, dtype
+    strict, clamp, dtype
 ))]
 pub fn describe(
     scene: &Bound<'_, Scene>,
@@ -146,6 +154,7 @@ pub fn describe(
     color_material_face: &str,
     accuracy: &str,
     strict: bool,
+    clamp: bool,
     dtype: &str,
 ) -> PyResult<String> {
     let options = options_from(
@@ -156,6 +165,7 @@ pub fn describe(
         color_material_face,
         accuracy,
         strict,
+        clamp,
     )?;
     let scene = &scene.get().state;
     match dtype {

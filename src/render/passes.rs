@@ -19,7 +19,7 @@ use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene, ValidScene};
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::prepare::ShadeOptions;
+use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
@@ -35,16 +35,23 @@ const FACES_PER_TASK: usize = 4096;
 
 /// The RGBA of a fragment from its colours in the scene's output order (`colour(k)` is colour
 /// k, front before back, primary before secondary): the back ones for a back-facing triangle
-/// of a two-sided scene, the primary and secondary summed and clamped.
+/// of a two-sided scene, the primary and secondary summed, and clamped unless `clamp` is off
+/// (high dynamic range).
 #[inline]
-fn fragment(scene: &Scene, front: bool, colour: impl Fn(usize) -> [f64; 4]) -> [f64; 4] {
+fn fragment(
+    scene: &Scene,
+    front: bool,
+    clamp: bool,
+    colour: impl Fn(usize) -> [f64; 4],
+) -> [f64; 4] {
     let per_side = 1 + usize::from(scene.separate_specular);
     let base = per_side * usize::from(scene.two_side && !front);
     let mut c = colour(base);
     if scene.separate_specular {
         let s = colour(base + 1);
         for k in 0..3 {
-            c[k] = (c[k] + s[k]).clamp(0.0, 1.0);
+            let sum = c[k] + s[k];
+            c[k] = if clamp { sum.clamp(0.0, 1.0) } else { sum };
         }
     }
     c
@@ -193,6 +200,7 @@ impl<T: Real> Pass<'_, T> {
     /// # Errors
     /// Those of [`shade`]; a memory error for the vertex colours.
     pub fn gouraud(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
+        let clamp = self.options.clamp == ColorClamp::On;
         let mesh = self.mesh;
         let n = mesh.vertices.len();
         let len = count(&[self.scene.output_count(), n, 4], "the vertex colours")?;
@@ -211,10 +219,14 @@ impl<T: Real> Pass<'_, T> {
             .paint(image, self.background, stop, |t, x, y, _| {
                 let face = mesh.faces[t.face as usize];
                 let weights = t.weights_at(x, y);
-                fragment(self.scene, t.front, |plane| {
+                fragment(self.scene, t.front, clamp, |plane| {
                     // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
-                    interpolate(&rows[plane * n..(plane + 1) * n], face, weights)
-                        .map(|c| c.clamp(0.0, 1.0))
+                    let c = interpolate(&rows[plane * n..(plane + 1) * n], face, weights);
+                    if clamp {
+                        c.map(|c| c.clamp(0.0, 1.0))
+                    } else {
+                        c
+                    }
                 })
             })
     }
@@ -225,6 +237,7 @@ impl<T: Real> Pass<'_, T> {
     /// # Errors
     /// Those of [`shade`] and [`face_normals`]; a memory error for the per-face buffers.
     pub fn flat(&self, image: &mut [T], stop: &Stop) -> Result<(), Error> {
+        let clamp = self.options.clamp == ColorClamp::On;
         let mesh = self.mesh;
         let m = mesh.faces.len();
         let computed;
@@ -281,7 +294,7 @@ impl<T: Real> Pass<'_, T> {
         )?;
         self.frame
             .paint(image, self.background, stop, |t, _, _, _| {
-                fragment(self.scene, t.front, |plane| {
+                fragment(self.scene, t.front, clamp, |plane| {
                     shaded(&colours, m, plane, t.face as usize)
                 })
             })
@@ -293,6 +306,7 @@ impl<T: Real> Pass<'_, T> {
     /// # Errors
     /// Those of [`shade`]; a memory error for the pixel buffers.
     pub fn phong(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
+        let clamp = self.options.clamp == ColorClamp::On;
         let (mesh, frame) = (self.mesh, &self.frame);
         let total: usize = frame.counts.iter().sum();
         let color_width = mesh.colors.map_or(0, |c| c.width);
@@ -345,7 +359,7 @@ impl<T: Real> Pass<'_, T> {
         )?;
         self.frame
             .paint(image, self.background, stop, |t, _, _, k| {
-                fragment(self.scene, t.front, |plane| {
+                fragment(self.scene, t.front, clamp, |plane| {
                     shaded(&colours, total, plane, k)
                 })
             })
@@ -365,14 +379,14 @@ mod tests {
             [0.0, 0.0, 0.0, 1.0],
         ];
         let mut scene = Scene::default();
-        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[0]);
+        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[0]);
         scene.two_side = true;
-        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[1]);
+        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[1]);
         scene.separate_specular = true;
         assert_eq!(
-            fragment(&scene, true, |k| colours[k]),
+            fragment(&scene, true, true, |k| colours[k]),
             [1.0, 0.25, 0.5, 0.5]
         );
-        assert_eq!(fragment(&scene, false, |k| colours[k]), colours[2]);
+        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[2]);
     }
 }

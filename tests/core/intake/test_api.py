@@ -292,6 +292,7 @@ def test_native_module_rejects_bad_arrays_without_crashing() -> None:
         "color_material_face": "front_and_back",
         "accuracy": "fast",
         "strict": False,
+        "clamp": True,
         "out": None,
     }
     with pytest.raises(TypeError, match="positions must be float32 or float64"):
