@@ -3,6 +3,7 @@ its linear result (``transfer="linear" | "srgb" | "gamma2.2"``)."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any, Literal
 
 import numpy as np
@@ -36,6 +37,14 @@ def _values(x: ArrayLike) -> FloatArray:
         return a
     converted: FloatArray = a.astype(np.float64)
     return converted
+
+
+def _mirrored(a: Any, curve: Callable[[Any], Any]) -> FloatArray:
+    """``sign(a) curve(|a|)`` in `a`'s dtype: a transfer curve of [0, inf) extended to negative
+    values (CSS Color 4's extended sRGB); NaN stays NaN."""
+    with np.errstate(invalid="ignore"):
+        result: FloatArray = np.copysign(curve(np.abs(a)), a).astype(a.dtype, copy=False)
+    return result
 
 
 def srgb_encode(x: ArrayLike) -> FloatArray:
@@ -77,13 +86,10 @@ def srgb_encode(x: ArrayLike) -> FloatArray:
     >>> gs.srgb_encode([0.0, 0.0031308, 0.18, 1.0]).round(4)
     array([0.    , 0.0404, 0.4614, 1.    ])
     """
-    a = _values(x)
-    magnitude = np.abs(a)
-    with np.errstate(invalid="ignore"):
-        power = (1 + _A) * magnitude ** (1 / _GAMMA) - _A
-    encoded = np.where(magnitude <= _LINEAR_END, _SLOPE * magnitude, power)
-    result: FloatArray = np.copysign(encoded, a).astype(a.dtype, copy=False)
-    return result
+    return _mirrored(
+        _values(x),
+        lambda m: np.where(m <= _LINEAR_END, _SLOPE * m, (1 + _A) * m ** (1 / _GAMMA) - _A),
+    )
 
 
 def srgb_decode(x: ArrayLike) -> FloatArray:
@@ -120,13 +126,10 @@ def srgb_decode(x: ArrayLike) -> FloatArray:
     >>> gs.srgb_decode([0.0, 0.04045, 0.5, 1.0]).round(4)
     array([0.    , 0.0031, 0.214 , 1.    ])
     """
-    a = _values(x)
-    magnitude = np.abs(a)
-    with np.errstate(invalid="ignore"):
-        power = ((magnitude + _A) / (1 + _A)) ** _GAMMA
-    decoded = np.where(magnitude <= _ENCODED_END, magnitude / _SLOPE, power)
-    result: FloatArray = np.copysign(decoded, a).astype(a.dtype, copy=False)
-    return result
+    return _mirrored(
+        _values(x),
+        lambda m: np.where(m <= _ENCODED_END, m / _SLOPE, ((m + _A) / (1 + _A)) ** _GAMMA),
+    )
 
 
 def transfer_name(value: object) -> str:
@@ -144,6 +147,5 @@ def apply_transfer(rgba: Any, name: str) -> Any:
     if name == "srgb":
         out[..., :3] = srgb_encode(rgb)
     else:
-        with np.errstate(invalid="ignore"):
-            out[..., :3] = np.copysign(np.abs(rgb) ** (1 / 2.2), rgb)
+        out[..., :3] = _mirrored(rgb, lambda m: m ** (1 / 2.2))
     return out

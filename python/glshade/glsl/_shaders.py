@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-from .._intake import choice
+from .._intake import one_of
 from .._records import ValueRecord
 from .._scene import Scene
 from .._typing import Shading
@@ -226,9 +226,7 @@ def raster_shaders(
     Shaders
         ``vertex`` and ``fragment`` set, ``compute`` None.
     """
-    mode = choice(shading, "shading")
-    if mode not in ("phong", "gouraud", "flat"):
-        raise ValueError(f"shading must be 'phong', 'gouraud' or 'flat', got {mode!r}")
+    mode = one_of(shading, "shading", ("phong", "gouraud", "flat"))
     plan = make_plan(
         scene,
         modelview=modelview,
