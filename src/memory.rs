@@ -1,8 +1,10 @@
 //! Memory: fallible allocation of every buffer whose size grows with the input
 //! ([`alloc`]: a request the allocator cannot meet is an error, never an abort) and zeroed
-//! scratch pages for the mesh passes ([`pages`]).
+//! scratch pages for the mesh passes ([`pages`]) and large results kept for the next call
+//! ([`recycle`]).
 //!
 //! Uses only [`crate::errors`].
 
 pub mod alloc;
 pub mod pages;
+pub mod recycle;
