@@ -27,7 +27,7 @@
 //! | `normals` | face and vertex normals, the vertex-to-face adjacency |
 //! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade` |
 //! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
-//! | `numbers` | `exp`/`ln` over lanes (exact and display tiers), `Real`, matrix helpers |
+//! | `numbers` | `exp`/`ln` over lanes, `Real`, matrix helpers |
 //! | `simd` | `f32`/`f64` behind one trait, the lanes of each instruction set, dispatch |
 //! | `memory` | fallible allocation, zeroed scratch pages |
 //! | `errors` | the error type, stopping a call |

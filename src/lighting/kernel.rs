@@ -23,7 +23,6 @@ use crate::lighting::plan::{LightKind, Plan};
 use crate::lighting::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
 use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Viewer};
 use crate::lighting::shape::{flag, General, Shape};
-use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::Real;
 use crate::simd::float::{ldexp, Float};
 use crate::simd::lanes::{
@@ -99,76 +98,47 @@ struct SideNormal<V: Lanes> {
     scale: Scale<V>,
 }
 
-/// An RGB sum widened to `f64`.
+/// `sum + color · weight`, channel by channel (one fused multiply-add each).
 #[inline(always)]
-fn widen<V: Lanes>(v: V3<V>) -> [V::Wide; 3] {
-    [v.x.widen(), v.y.widen(), v.z.widen()]
-}
-
-/// A running RGB sum of light terms: in the lanes' own type ([`V3`]) or widened to `f64`
-/// ([`Widened`]).
-trait Accumulator<V: Lanes>: Copy {
-    /// The empty sum.
-    fn zero() -> Self;
-    /// The sum with `color · weight` added.
-    #[must_use]
-    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self;
-    /// The sum in the lanes' type.
-    fn total(self) -> V3<V>;
-}
-
-impl<V: Lanes> Accumulator<V> for V3<V> {
-    #[inline(always)]
-    fn zero() -> Self {
-        V3::zero()
-    }
-    #[inline(always)]
-    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self {
-        let c = V3::<V>::splat(color);
-        V3 {
-            x: c.x.mul_add(weight, self.x),
-            y: c.y.mul_add(weight, self.y),
-            z: c.z.mul_add(weight, self.z),
-        }
-    }
-    #[inline(always)]
-    fn total(self) -> V3<V> {
-        self
-    }
-}
-
-/// An `f32` sum kept in `f64`: each term is added exactly up to 2^-53 of the total, so the
-/// rounded total is within 1 ulp of the correctly rounded sum whatever the order of the lights.
-#[derive(Clone, Copy)]
-struct Widened<V: Lanes>([V::Wide; 3]);
-
-impl<V: Lanes> Accumulator<V> for Widened<V> {
-    #[inline(always)]
-    fn zero() -> Self {
-        Self(widen(V3::<V>::zero()))
-    }
-    #[inline(always)]
-    fn add_scaled(self, color: [V::T; 3], weight: V) -> Self {
-        let [x, y, z] = widen(V3::splat(color).scale(weight));
-        Self([self.0[0] + x, self.0[1] + y, self.0[2] + z])
-    }
-    #[inline(always)]
-    fn total(self) -> V3<V> {
-        V3 {
-            x: V::narrow(self.0[0]),
-            y: V::narrow(self.0[1]),
-            z: V::narrow(self.0[2]),
-        }
-    }
-}
-
-/// The compensated sum `total + error` of [`widen`]ed sums, rounded back.
-#[inline(always)]
-fn narrow<V: Lanes>(total: [V::Wide; 3], error: [V::Wide; 3]) -> V3<V> {
+fn add_scaled<V: Lanes>(sum: V3<V>, color: [V::T; 3], weight: V) -> V3<V> {
+    let c = V3::<V>::splat(color);
     V3 {
-        x: V::narrow(total[0] + error[0]),
-        y: V::narrow(total[1] + error[1]),
-        z: V::narrow(total[2] + error[2]),
+        x: c.x.mul_add(weight, sum.x),
+        y: c.y.mul_add(weight, sum.y),
+        z: c.z.mul_add(weight, sum.z),
+    }
+}
+
+/// A sum of blocks kept as `total + error` (Knuth's TwoSum per block), so the blocks' own
+/// rounding is all that remains: [`Float::SUM_BLOCK`] ulp of Σ|terms| at most, whatever the
+/// light count.
+#[derive(Clone, Copy)]
+struct Compensated<V: Lanes> {
+    total: V3<V>,
+    error: V3<V>,
+}
+
+impl<V: Lanes> Compensated<V> {
+    /// The sum with the block sum `part` added.
+    #[inline(always)]
+    fn add(self, part: V3<V>) -> Self {
+        let (x, ex) = sum_exact(self.total.x, part.x);
+        let (y, ey) = sum_exact(self.total.y, part.y);
+        let (z, ez) = sum_exact(self.total.z, part.z);
+        Self {
+            total: V3 { x, y, z },
+            error: V3 {
+                x: self.error.x + ex,
+                y: self.error.y + ey,
+                z: self.error.z + ez,
+            },
+        }
+    }
+
+    /// The compensated sum, rounded once.
+    #[inline(always)]
+    fn rounded(self) -> V3<V> {
+        self.total + self.error
     }
 }
 
@@ -249,16 +219,16 @@ fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] 
 /// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
 /// elementary functions of tier `F`, compiled for scenes of shape `S` (whose flags the plan
 /// must have: see [`crate::lighting::shape::fits`]).
-pub struct Kernel<'a, T: Real, F: Tier = Full, S: Shape = General> {
+pub struct Kernel<'a, T: Real, S: Shape = General> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,
     /// Which terms to compute.
     pub plan: &'a Plan,
     /// The tier and the shape.
-    pub compiled: PhantomData<(F, S)>,
+    pub compiled: PhantomData<S>,
 }
 
-impl<'a, T: Real, F: Tier, S: Shape> Kernel<'a, T, F, S> {
+impl<'a, T: Real, S: Shape> Kernel<'a, T, S> {
     /// The kernel of `prepared` and `plan` in tier `F`, for shape `S`.
     pub fn new(prepared: &'a Prepared<T>, plan: &'a Plan) -> Self {
         Self {
@@ -281,7 +251,7 @@ impl<'a, T: Real, F: Tier, S: Shape> Kernel<'a, T, F, S> {
     }
 }
 
-impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
+impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// Some light has an ambient term.
     #[inline(always)]
     fn any_ambient(&self) -> bool {
@@ -316,7 +286,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                 };
                 let cone = kind != Some(LightKind::Positional { spot: false });
                 let w = match spot {
-                    Some(s) if cone => att * spot_factor::<V, F>(&s, -vp),
+                    Some(s) if cone => att * spot_factor::<V>(&s, -vp),
                     _ => att,
                 };
                 (vp, w)
@@ -349,7 +319,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                     if h.direction == [T::ZERO; 3] {
                         return V::splat(T::ZERO);
                     }
-                    return halfway_pow::<V, F>(side.n, side.unit, &h, s, &side.scale);
+                    return halfway_pow::<V>(side.n, side.unit, &h, s, &side.scale);
                 }
                 // A shape whose every ĥ is constant never comes here (`shape::fits`).
                 let constant = LightKind::Directional {
@@ -359,7 +329,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                     return V::splat(T::ZERO);
                 }
                 let h = normalize_or_zero_fast(vp + view);
-                let power = cos_pow::<V, F>(side.unit.dot(h), side.unit, h, s, &side.scale);
+                let power = cos_pow::<V>(side.unit.dot(h), side.unit, h, s, &side.scale);
                 power.or_zero(!h.is_zero())
             }
             Specular::Phong => {
@@ -371,7 +341,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                 } else {
                     Scale::of(r, r_length)
                 };
-                let power = cos_pow::<V, F>(r_unit.dot(view), r_unit, view, s, &scale);
+                let power = cos_pow::<V>(r_unit.dot(view), r_unit, view, s, &scale);
                 power.or_zero(!(zero | view.is_zero()))
             }
         }
@@ -408,7 +378,7 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
     /// `side` (0 front, 1 back, whose normal `normal` is already negated): ambient, diffuse
     /// and specular.
     #[inline(always)]
-    fn sums<V: Lanes<T = T>, A: Accumulator<V>>(
+    fn sums<V: Lanes<T = T>>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
@@ -421,20 +391,20 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
         let zero = V::splat(T::ZERO);
         let side_plan = &plan.sides[side];
         let s = prepared.materials[side].shininess;
-        let [mut ambient, mut diffuse, mut specular] = [A::zero(); 3];
+        let [mut ambient, mut diffuse, mut specular] = [V3::zero(); 3];
         let lit_all = S::KNOWN.lit == Some(true) && side == 0;
         for (light, lp) in lights.iter().zip(&plan.lights[first..]) {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if flag(S::KNOWN.light_ambient, lp.ambient) {
                 let weight = w.min(V::splat(T::SATURATION));
-                ambient = ambient.add_scaled(light.ambient, weight);
+                ambient = add_scaled(ambient, light.ambient, weight);
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lit_all || lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
-                diffuse = diffuse.add_scaled(light.diffuse, weight);
+                diffuse = add_scaled(diffuse, light.diffuse, weight);
             }
             if lit_all || (lp.specular && side_plan.specular) {
                 let power = if lit_all || side_plan.power {
@@ -450,18 +420,16 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
                 let weight = weight(w, power).or_zero(gate);
-                specular = specular.add_scaled(light.specular, weight);
+                specular = add_scaled(specular, light.specular, weight);
             }
         }
-        [ambient.total(), diffuse.total(), specular.total()]
+        [ambient, diffuse, specular]
     }
 
-    /// The light sums of every light, saturated: in `T` for up to [`Float::SUM_BLOCK`] lights
-    /// (within ½ ulp of Σ|terms| per light). Beyond, in `f32` every term is added in `f64` and
-    /// the total rounded once, within 1 ulp of the correctly rounded sum whatever the order of
-    /// the lights (a sum of blocks in `f32` loses the small terms that share a block with a
-    /// large one); in `f64`, blocks of that many are added with their rounding errors kept
-    /// apart, so the error is `SUM_BLOCK` ulp of Σ|terms| whatever the light count.
+    /// The light sums of every light, saturated: in blocks of [`Float::SUM_BLOCK`] lights
+    /// summed in `T` (within ½ ulp of Σ|terms| per light), the blocks' sums saturated and added
+    /// with their rounding errors kept apart ([`Compensated`]), so the error is `SUM_BLOCK` ulp
+    /// of Σ|terms| whatever the light count.
     #[inline(always)]
     fn all_sums<V: Lanes<T = T>>(
         &self,
@@ -471,30 +439,22 @@ impl<T: Real, F: Tier, S: Shape> Kernel<'_, T, F, S> {
         view: V3<V>,
     ) -> [V3<V>; 3] {
         let lights = &self.prepared.lights;
-        let narrow_type = std::mem::size_of::<T>() < std::mem::size_of::<f64>();
         let sums = if flag(S::KNOWN.few_lights, lights.len() <= T::SUM_BLOCK) {
-            self.sums::<V, V3<V>>(lights, 0, p, normal, side, view)
-        } else if narrow_type {
-            self.sums::<V, Widened<V>>(lights, 0, p, normal, side, view)
+            self.sums::<V>(lights, 0, p, normal, side, view)
         } else {
-            let zero = V::splat(T::ZERO).widen();
-            let (mut total, mut error) = ([[zero; 3]; 3], [[zero; 3]; 3]);
+            let empty = Compensated {
+                total: V3::zero(),
+                error: V3::zero(),
+            };
+            let mut sums = [empty; 3];
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums::<V, V3<V>>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
-                for ((t, e), x) in total.iter_mut().zip(&mut error).zip(part) {
-                    let x = widen(x);
-                    for k in 0..3 {
-                        let (sum, rounding) = sum_exact(t[k], x[k]);
-                        t[k] = sum;
-                        e[k] = e[k] + rounding;
-                    }
+                let part = self.sums::<V>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
+                for (sum, part) in sums.iter_mut().zip(part) {
+                    // Saturated, so no partial total overflows (inf − inf would be NaN).
+                    *sum = sum.add(sat3(part));
                 }
             }
-            [
-                narrow(total[0], error[0]),
-                narrow(total[1], error[1]),
-                narrow(total[2], error[2]),
-            ]
+            sums.map(Compensated::rounded)
         };
         let ambient = if self.any_ambient() {
             sat3(sums[0])

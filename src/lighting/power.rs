@@ -5,7 +5,7 @@
 
 use std::ops::{Add, Sub};
 
-use crate::numbers::elementary::{ElementaryLanes, Tier};
+use crate::numbers::elementary::ElementaryLanes;
 use crate::simd::float::Float;
 use crate::simd::lanes::{normalize_and_length, LaneMask, Lanes, V3};
 
@@ -151,13 +151,7 @@ pub fn squared_minus_one<V: Lanes>(v: V3<V>) -> (V, V::Mask) {
 /// as s·ulp. The length of the vector `a` stands for enters through `scale` (see [`Scale`]):
 /// near 1 as the complement's |v| − 1, elsewhere (those lanes take exp and ln) as ln |v|.
 #[inline(always)]
-pub fn cos_pow<V: ElementaryLanes, F: Tier>(
-    cos: V,
-    a: V3<V>,
-    b: V3<V>,
-    s: V::T,
-    scale: &Scale<V>,
-) -> V {
+pub fn cos_pow<V: ElementaryLanes>(cos: V, a: V3<V>, b: V3<V>, s: V::T, scale: &Scale<V>) -> V {
     if s == V::T::ZERO {
         return V::splat(V::T::ONE);
     }
@@ -167,7 +161,7 @@ pub fn cos_pow<V: ElementaryLanes, F: Tier>(
     // y > −1: the base is positive (not rounded to 0, where ln would be −inf).
     let zero = V::splat(V::T::ZERO);
     let valid = cos.gt(zero) & x.lt(V::splat(V::T::ONE)) & y.gt(V::splat(-V::T::ONE));
-    power_of_base::<V, F>(y, scale, s, valid)
+    power_of_base::<V>(y, scale, s, valid)
 }
 
 /// 1 − â·b̂ for unit `a` and `b`, as |â − b̂|²/2: no cancellation near â = b̂.
@@ -214,7 +208,7 @@ impl<T: Float> Halfway<T> {
 /// vertex. The other lanes take cos_pow's 1 − n̂·ĥ = |n̂ − ĥ|²/2 and ln |n|, from `unit`
 /// (n̂), which is read only in a block that has such a lane.
 #[inline(always)]
-pub fn halfway_pow<V: ElementaryLanes, F: Tier>(
+pub fn halfway_pow<V: ElementaryLanes>(
     n: V3<V>,
     unit: V3<V>,
     halfway: &Halfway<V::T>,
@@ -237,26 +231,21 @@ pub fn halfway_pow<V: ElementaryLanes, F: Tier>(
         let y = V::select(scale.near, y_near, -x);
         (y, lit & (scale.near | x.lt(one)) & y.gt(-one))
     };
-    power_of_base::<V, F>(y, scale, s, valid)
+    power_of_base::<V>(y, scale, s, valid)
 }
 
 /// (1 + y)^s in the `valid` lanes (y > −1 there), 0 elsewhere, for s ≠ 0: by squaring on the
 /// complement −y for the integer s up to [`SQUARED_EXPONENT_MAX`] where the length of `scale`
 /// is near 1, else `exp(s·(ln_1p(y) + ln |v|))`, ln |v| in the lanes that are not near 1.
 #[inline(always)]
-fn power_of_base<V: ElementaryLanes, F: Tier>(
-    y: V,
-    scale: &Scale<V>,
-    s: V::T,
-    valid: V::Mask,
-) -> V {
+fn power_of_base<V: ElementaryLanes>(y: V, scale: &Scale<V>, s: V::T, valid: V::Mask) -> V {
     let zero = V::splat(V::T::ZERO);
     let squared = squared_exponent(s).map(|k| complement_pow(-y, k));
     let power = match squared {
         Some(p) if scale.near.all() => p,
         _ => {
-            let ln = F::ln_1p(y) + V::select(scale.near, zero, scale.ln);
-            let general = F::exp(V::splat(s) * ln);
+            let ln = y.ln_1p() + V::select(scale.near, zero, scale.ln);
+            let general = (V::splat(s) * ln).exp();
             // Lane by lane, so a lane's value does not depend on the block it shares.
             squared.map_or(general, |p| V::select(scale.near, p, general))
         }
@@ -310,17 +299,16 @@ fn complement_pow<V: Lanes>(c: V, k: u32) -> V {
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
 /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
 #[inline(always)]
-pub fn spot_factor<V: ElementaryLanes, F: Tier>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
+pub fn spot_factor<V: ElementaryLanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
     let axis = V3::splat(spot.direction);
     let c = to_vertex.dot(axis).max(V::splat(V::T::ZERO));
     let inside = c.ge(V::splat(spot.cos_cutoff));
-    cos_pow::<V, F>(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
+    cos_pow::<V>(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::numbers::elementary::Full;
     use crate::simd::lanes::Pack;
 
     type One = Pack<f32, 1>;
@@ -330,7 +318,7 @@ mod tests {
     }
 
     fn pow1(cos: f32, a: [f32; 3], b: [f32; 3], s: f32) -> f32 {
-        cos_pow::<_, Full>(Pack([cos]), one(a), one(b), s, &Scale::unit()).0[0]
+        cos_pow(Pack([cos]), one(a), one(b), s, &Scale::unit()).0[0]
     }
 
     #[test]
@@ -428,8 +416,8 @@ mod tests {
             let scale = Scale::of(v, len);
             let h = V3::splat(h);
             [
-                cos_pow::<_, Full>(unit.dot(h), unit, h, 32.0, &scale).0,
-                halfway_pow::<_, Full>(v, unit, &halfway, 32.0, &scale).0,
+                cos_pow(unit.dot(h), unit, h, 32.0, &scale).0,
+                halfway_pow(v, unit, &halfway, 32.0, &scale).0,
             ]
         };
         let block = powers(V3 {
@@ -470,7 +458,7 @@ mod tests {
     fn halfway1(n: [f32; 3], h: [f32; 3], s: f32) -> f32 {
         let v = V3::<One>::splat(n);
         let (unit, scale) = normal_scale(v, false);
-        halfway_pow::<_, Full>(v, unit, &Halfway::new(h), s, &scale).0[0]
+        halfway_pow(v, unit, &Halfway::new(h), s, &scale).0[0]
     }
 
     #[test]
@@ -534,7 +522,7 @@ mod tests {
             let scale = Scale::of(v1, len);
             assert!(!scale.near.0[0]);
             let h = V3::splat([0.0, 0.0, 1.0]);
-            let got = f64::from(cos_pow::<_, Full>(unit.dot(h), unit, h, s, &scale).0[0]);
+            let got = f64::from(cos_pow(unit.dot(h), unit, h, s, &scale).0[0]);
             let exact = f64::from(v[2]).powf(f64::from(s));
             assert!((got / exact - 1.0).abs() < 1e-6, "{got} vs {exact}");
         }

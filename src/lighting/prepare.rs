@@ -9,7 +9,6 @@ use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, Material};
 use crate::gl::scene::{Scene, Specular, ValidScene};
 use crate::lighting::power::{spot_factor, Halfway, Spot};
-use crate::numbers::elementary::Full;
 use crate::numbers::matrix::scaled_inverse;
 use crate::numbers::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::simd::float::{exponent, ldexp};
@@ -270,13 +269,10 @@ pub enum Accuracy {
     Fast,
     /// `f64` throughout, whatever the input; `f32` results are rounded once at the end.
     Exact,
-    /// The input's precision with cheaper `exp` and `ln` (`numbers::display`): every output
-    /// within 2^-10 of the exact value, a quarter of an 8-bit step.
-    Display,
 }
 
 impl Accuracy {
-    /// Parses `"fast"`, `"exact"` or `"display"`.
+    /// Parses `"fast"` or `"exact"`.
     ///
     /// # Errors
     /// A value error naming `accuracy` for any other string.
@@ -284,9 +280,8 @@ impl Accuracy {
         match name {
             "fast" => Ok(Self::Fast),
             "exact" => Ok(Self::Exact),
-            "display" => Ok(Self::Display),
             _ => Err(Error::value(format!(
-                "accuracy must be 'fast', 'exact' or 'display', got '{name}'"
+                "accuracy must be 'fast' or 'exact', got '{name}'"
             ))),
         }
     }
@@ -348,8 +343,6 @@ pub struct Prepared<T: Real> {
     pub specular: Specular,
     /// f_i of eq. 2.2 on (GL) or off (learnopengl); see [`Scene::specular_gate`].
     pub specular_gate: bool,
-    /// The accuracy mode (`Display`: the kernel's powers use [`crate::numbers::display::Display`]).
-    pub accuracy: Accuracy,
     /// `GL_COLOR_MATERIAL`.
     pub color_material: Option<ColorMaterial>,
     /// Whether the outputs are clamped to [0, 1].
@@ -410,7 +403,7 @@ fn prepare_light<T: Real>(
         let vp = cast::<T>(vp);
         let spot = spot.map_or(T::ONE, |s| {
             let to_vertex = -V3::<T::Vector<Scalar>>::splat(vp);
-            spot_factor::<_, Full>(&s, to_vertex).lane(0)
+            spot_factor(&s, to_vertex).lane(0)
         });
         Source::Directional { vp, halfway, spot }
     } else {
@@ -485,7 +478,6 @@ impl<T: Real> Prepared<T> {
             separate_specular: scene.separate_specular,
             specular: scene.specular,
             specular_gate: scene.specular_gate,
-            accuracy: options.accuracy,
             color_material: options.color_material,
             clamp: options.clamp,
         })
@@ -519,19 +511,13 @@ mod tests {
         };
         assert_eq!(spot.cos_cutoff, 0.0);
         // Perpendicular to the axis: on the edge, inside, 0^0 = 1.
-        assert_eq!(spot_factor::<_, Full>(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
+        assert_eq!(spot_factor(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
         let sharp = Spot {
             exponent: 2.0,
             ..spot
         };
-        assert_eq!(
-            spot_factor::<_, Full>(&sharp, one([1.0, 0.0, 0.0])).0,
-            [0.0]
-        );
-        assert_eq!(
-            spot_factor::<_, Full>(&sharp, one([0.0, 0.0, -1.0])).0,
-            [1.0]
-        );
+        assert_eq!(spot_factor(&sharp, one([1.0, 0.0, 0.0])).0, [0.0]);
+        assert_eq!(spot_factor(&sharp, one([0.0, 0.0, -1.0])).0, [1.0]);
     }
 
     #[test]

@@ -19,8 +19,6 @@ use crate::lighting::prepare::{Accuracy, ColorClamp, Prepared, ShadeOptions};
 use crate::lighting::shape::{on_shape, OnShape, Shape};
 use crate::memory::alloc::try_with_capacity;
 use crate::memory::pages::Zeroed;
-use crate::numbers::display::Display;
-use crate::numbers::elementary::{Full, Tier};
 use crate::numbers::real::{block_lanes, BlockLanes, Real};
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::Float;
@@ -77,7 +75,7 @@ pub(crate) trait BlockShader<T: Real>: Sync {
     }
 }
 
-impl<T: Real, F: Tier, S: Shape> BlockShader<T> for Kernel<'_, T, F, S> {
+impl<T: Real, S: Shape> BlockShader<T> for Kernel<'_, T, S> {
     #[inline(always)]
     fn reads_positions(&self) -> bool {
         Kernel::reads_positions(self)
@@ -253,8 +251,7 @@ fn check_arrays<T: Real>(
 /// are shaded in parallel; the result is identical for any number of threads and on any CPU.
 ///
 /// `options.accuracy` picks the arithmetic: [`Accuracy::Fast`] computes in `T`,
-/// [`Accuracy::Exact`] in `f64` whatever `T` is, [`Accuracy::Display`] in `T` with the cheaper
-/// elementary functions of `numbers::display`.
+/// [`Accuracy::Exact`] in `f64` whatever `T` is.
 ///
 /// `stop` is polled before every task of `ROWS_PER_TASK` (8192) rows; once it is requested the
 /// remaining tasks are skipped and `out` is left partly written.
@@ -381,15 +378,11 @@ pub(crate) fn run<T: Real>(
         normals,
         colors,
     };
-    if prepared.accuracy == Accuracy::Display {
-        run_shaped::<T, Display>(prepared, plan, isa, inputs, out, stop)
-    } else {
-        run_shaped::<T, Full>(prepared, plan, isa, inputs, out, stop)
-    }
+    run_shaped(prepared, plan, isa, inputs, out, stop)
 }
 
-/// [`run`] in tier `F`, with the kernel compiled for the call's shape of scene.
-fn run_shaped<T: Real, F: Tier>(
+/// [`run`] with the kernel compiled for the call's shape of scene.
+fn run_shaped<T: Real>(
     prepared: &Prepared<T>,
     plan: &Plan,
     isa: Isa,
@@ -397,30 +390,28 @@ fn run_shaped<T: Real, F: Tier>(
     out: &mut [MaybeUninit<T>],
     stop: &Stop,
 ) -> Result<(), Error> {
-    struct Run<'a, 'b, T: Real, F> {
+    struct Run<'a, 'b, T: Real> {
         prepared: &'a Prepared<T>,
         plan: &'a Plan,
         isa: Isa,
         inputs: Inputs<'a, T>,
         out: &'b mut [MaybeUninit<T>],
         stop: &'a Stop,
-        tier: PhantomData<F>,
     }
-    impl<T: Real, F: Tier> OnShape for Run<'_, '_, T, F> {
+    impl<T: Real> OnShape for Run<'_, '_, T> {
         type Output = Result<(), Error>;
         fn call<S: Shape>(self) -> Self::Output {
-            let kernel = Kernel::<T, F, S>::new(self.prepared, self.plan);
+            let kernel = Kernel::<T, S>::new(self.prepared, self.plan);
             run_tier(&kernel, self.isa, self.inputs, self.out, self.stop)
         }
     }
-    let work = Run::<T, F> {
+    let work = Run {
         prepared,
         plan,
         isa,
         inputs,
         out,
         stop,
-        tier: PhantomData,
     };
     on_shape(plan, prepared, isa, work)
 }
@@ -488,7 +479,6 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
     let mode = match options.accuracy {
         Accuracy::Fast => "fast",
         Accuracy::Exact => "exact",
-        Accuracy::Display => Display::NAME,
     };
     let range = if options.clamp == ColorClamp::Off {
         "; unclamped (high dynamic range)"
@@ -726,7 +716,7 @@ mod tests {
 
     /// One light of diffuse 0.9 and 999 of 2.9e-8 (each below half an ulp of 0.9), facing a
     /// unit normal: the sum in `f32`, in this order and reversed.
-    fn bright_and_dim(reversed: bool, count: usize) -> (f32, f64) {
+    fn bright_and_dim(reversed: bool, count: usize, accuracy: Accuracy) -> (f32, f64) {
         let light = |d: f64| Light {
             position: [0.0, 0.0, 1.0, 0.0],
             diffuse: [d, d, d, 1.0],
@@ -750,7 +740,11 @@ mod tests {
             global_ambient: [0.0; 4],
             ..Scene::default()
         };
-        let out = shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &ShadeOptions::default());
+        let options = ShadeOptions {
+            accuracy,
+            ..ShadeOptions::default()
+        };
+        let out = shade_one::<f32>(&scene, [0.0; 3], [0.0, 0.0, 1.0], &options);
         // The terms as the kernel forms them (colours rounded to f32), summed exactly enough.
         let exact = f64::from(0.9_f32) + (count - 1) as f64 * f64::from(2.9e-8_f32);
         (out[0], exact)
@@ -758,14 +752,22 @@ mod tests {
 
     #[test]
     fn light_sums_do_not_depend_on_the_order_of_the_lights() {
-        // Up to 8 lights are summed in f32 (within ½ ulp of Σ|terms| per light); beyond, in f64.
+        // "fast" sums blocks of 8 lights in f32 and adds the blocks' sums with their rounding
+        // errors kept apart: within SUM_BLOCK ulp of Σ|terms| in any order (a plain f32 sum
+        // from the bright light on loses all 999 dim terms, 28 ulp). "exact" sums in f64:
+        // within 1 ulp of the correctly rounded total.
         for count in [9, 1000] {
-            let (forward, exact) = bright_and_dim(false, count);
-            let (backward, _) = bright_and_dim(true, count);
-            let rounded = exact as f32;
-            let ulp = f32::from_bits(rounded.to_bits() + 1) - rounded;
-            for got in [forward, backward] {
-                assert!((got - rounded).abs() <= ulp, "{count}: {got} vs {rounded}");
+            for (accuracy, ulps) in [(Accuracy::Fast, f32::SUM_BLOCK), (Accuracy::Exact, 1)] {
+                let (forward, exact) = bright_and_dim(false, count, accuracy);
+                let (backward, _) = bright_and_dim(true, count, accuracy);
+                let rounded = exact as f32;
+                let ulp = f32::from_bits(rounded.to_bits() + 1) - rounded;
+                for got in [forward, backward] {
+                    assert!(
+                        (got - rounded).abs() <= ulps as f32 * ulp,
+                        "{count}, {accuracy:?}: {got} vs {rounded}"
+                    );
+                }
             }
         }
     }

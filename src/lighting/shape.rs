@@ -67,7 +67,6 @@ impl Known {
     /// gate, one colour, a few lights that each light diffusely and specularly and add no
     /// ambient term (the lights' kinds and the viewer left open).
     const PLAIN: Known = Known {
-        light_ambient: Some(false),
         lit: Some(true),
         transform: Some(false),
         colors: Some(false),
@@ -75,7 +74,6 @@ impl Known {
         specular: Some(Specular::Blinn),
         gate: Some(true),
         separate_specular: Some(false),
-        few_lights: Some(true),
         ..Known::NOTHING
     };
 }

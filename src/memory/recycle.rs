@@ -54,17 +54,13 @@ impl Recycled {
                 .min_by_key(|&i| pool[i].len());
             best.map(|i| pool.remove(i))
         };
-        let map = match pooled {
-            Some(map) => map,
-            None => {
-                let size = bytes.checked_next_multiple_of(GRANULE)?;
-                let map = MmapMut::map_anon(size).ok()?;
-                // Only a hint: without transparent huge pages the mapping still works.
-                #[cfg(target_os = "linux")]
-                let _ = map.advise(memmap2::Advice::HugePage);
-                map
-            }
-        };
+        if let Some(map) = pooled {
+            return Some(Self { map: Some(map) });
+        }
+        let map = MmapMut::map_anon(bytes.checked_next_multiple_of(GRANULE)?).ok()?;
+        // Only a hint: without transparent huge pages the mapping still works.
+        #[cfg(target_os = "linux")]
+        let _ = map.advise(memmap2::Advice::HugePage);
         Some(Self { map: Some(map) })
     }
 
@@ -108,7 +104,7 @@ mod tests {
         );
         let mut a = Recycled::take(RECYCLED_BYTES + 1).unwrap();
         let len = a.map.as_ref().unwrap().len();
-        assert!(len > RECYCLED_BYTES && len % GRANULE == 0);
+        assert!(len > RECYCLED_BYTES && len.is_multiple_of(GRANULE));
         // Written, then freed and taken again: the same pages (their contents kept).
         let first = a.as_mut_ptr();
         a.map.as_mut().unwrap()[0] = 7;

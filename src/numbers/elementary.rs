@@ -324,33 +324,6 @@ where
     }
 }
 
-/// The elementary functions a kernel's powers use: [`Full`] (`"fast"` and `"exact"`) or
-/// [`crate::numbers::display::Display`] (`"display"`). A kernel is compiled once per tier, from one
-/// definition.
-pub trait Tier: Send + Sync + 'static {
-    /// The accuracy mode's name, as `Scene.plan()` prints it.
-    const NAME: &'static str;
-    /// Lane-wise `e^x`.
-    fn exp<V: ElementaryLanes>(x: V) -> V;
-    /// Lane-wise `ln(1 + x)` for x in (−1, ½].
-    fn ln_1p<V: ElementaryLanes>(x: V) -> V;
-}
-
-/// The functions above: within 2 ulp in `f32`, 1 ulp in `f64`.
-pub struct Full;
-
-impl Tier for Full {
-    const NAME: &'static str = "fast";
-    #[inline(always)]
-    fn exp<V: ElementaryLanes>(x: V) -> V {
-        x.exp()
-    }
-    #[inline(always)]
-    fn ln_1p<V: ElementaryLanes>(x: V) -> V {
-        x.ln_1p()
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::ElementaryLanes;

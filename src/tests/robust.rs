@@ -220,7 +220,7 @@ fn a_requested_stop_interrupts_every_entry_point() {
     let scene = scene();
     // Several tasks of every kind: shade's 8192 rows, the normals' 4096 faces.
     let (p, q) = rows(40_000);
-    for accuracy in [Accuracy::Fast, Accuracy::Exact, Accuracy::Display] {
+    for accuracy in [Accuracy::Fast, Accuracy::Exact] {
         let options = shade_options(accuracy);
         let mut out = vec![0.0_f64; 4 * 4 * p.len()];
         assert_interrupted(

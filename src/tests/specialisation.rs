@@ -14,7 +14,7 @@ use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
 use crate::gl::vertex_colors::VertexColors;
 use crate::lighting::plan::Plan;
-use crate::lighting::prepare::{Accuracy, Prepared, ShadeOptions};
+use crate::lighting::prepare::{Prepared, ShadeOptions};
 use crate::lighting::shade::{as_uninit, run};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
@@ -124,11 +124,10 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
     (scene, options)
 }
 
-/// The output bits of `plan` (new or general) on `isa` in mode `accuracy` (`Fast` or
-/// `Display`: the kernel's own arithmetic).
-fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa, accuracy: Accuracy) -> Vec<u64> {
-    let (scene, mut options) = scene_of(bits);
-    options.accuracy = accuracy;
+/// The output bits of `plan` (new or general) on `isa` in mode `"fast"` (the kernel's own
+/// arithmetic).
+fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
+    let (scene, options) = scene_of(bits);
     let scene = scene.validated().unwrap();
     let (positions, normals, colors) = vertices::<T>();
     let prepared = Prepared::<T>::new(&scene, &options).unwrap();
@@ -158,19 +157,17 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa, accuracy: Accuracy) -
 
 fn check_every_subset<T: Real>() {
     let isas: Vec<Isa> = Isa::ALL.into_iter().filter(|i| i.supported()).collect();
-    for accuracy in [Accuracy::Fast, Accuracy::Display] {
-        for bits in 0..1 << FEATURES {
-            let reference = shade_bits::<T>(bits, true, Isa::Baseline, accuracy);
-            for &isa in &isas {
-                for general in [false, true] {
-                    assert!(
-                        shade_bits::<T>(bits, general, isa, accuracy) == reference,
-                        "features {bits:#016b}, {accuracy:?}: plan {} on {} differs from the \
-                         general plan on baseline",
-                        if general { "general" } else { "new" },
-                        isa.name(),
-                    );
-                }
+    for bits in 0..1 << FEATURES {
+        let reference = shade_bits::<T>(bits, true, Isa::Baseline);
+        for &isa in &isas {
+            for general in [false, true] {
+                assert!(
+                    shade_bits::<T>(bits, general, isa) == reference,
+                    "features {bits:#016b}: plan {} on {} differs from the general plan on \
+                     baseline",
+                    if general { "general" } else { "new" },
+                    isa.name(),
+                );
             }
         }
     }
