@@ -59,30 +59,34 @@ def spread(t: dict[str, Any], unit: str = " ms", digits: int = 1) -> str:
 
 
 def shade_table(data: dict[str, Any]) -> Table:
-    """``bench shade``: million vertices/s per scene and size, and the ratios it prints."""
-    header = (
-        f"scene|vertices|glshade|numpy|numba|stream|{TIMES} numpy|{TIMES} numba|of stream|"
-        "display|f64 exact"
-    ).split("|")
+    """``bench shade``: million vertices/s per scene and size, and the ratios it prints. Files
+    written before Dr.Jit and JAX joined have a display column instead of theirs; files with
+    the peers also give each method's largest error on the smooth set."""
+    peers = any("drjit" in row["mvert_s"] or "jax" in row["mvert_s"] for row in scenes(data))
+    methods = ["numpy", "numba", "drjit", "jax"] if peers else ["numpy", "numba"]
+    header = ["scene", "vertices", "glshade", *methods, "stream"]
+    header += [f"{TIMES} {m}" for m in methods] + ["of stream"]
+    header += ["f64 exact"] if peers else ["display", "f64 exact"]
+    if peers:
+        header.append("max error, glshade (largest peer)")
     rows, previous = [], None
-    for row in data["results"]["scenes"]:
+    for row in scenes(data):
         rate, ratio = row["mvert_s"], {k: r["median"] for k, r in row["speedup"].items()}
-        numba = "numba" in rate
-        rows.append(
-            [
-                "" if row["scene"] == previous else row["scene"],
-                count(row["vertices"]),
-                f"{rate['glshade']:.1f}",
-                f"{rate['numpy']:.1f}",
-                f"{rate['numba']:.1f}" if numba else DASH,
-                f"{rate['stream']:.1f}",
-                f"{ratio['numpy']:.1f}",
-                f"{ratio['numba']:.1f}" if numba else DASH,
-                f"{ratio['stream']:.2f}",
-                f"{1 / ratio['display']:.2f}{TIMES}",
-                f"{1 / ratio['exact64']:.2f}{TIMES}",
-            ]
-        )
+        cells = ["" if row["scene"] == previous else row["scene"], count(row["vertices"])]
+        cells += [f"{rate[m]:.1f}" if m in rate else DASH for m in ["glshade", *methods]]
+        cells.append(f"{rate['stream']:.1f}")
+        cells += [times(ratio[m]) if m in ratio else DASH for m in methods]
+        cells.append(f"{ratio['stream']:.2f}")
+        if not peers:
+            cells.append(f"{1 / ratio['display']:.2f}{TIMES}")
+        cells.append(f"{1 / ratio['exact64']:.2f}{TIMES}")
+        if peers:
+            errors = row.get("error_smooth", {})
+            others = [v for k, v in errors.items() if k in methods and v == v]
+            cells.append(
+                f"{errors['glshade']:.1e} ({max(others):.1e})" if "glshade" in errors else DASH
+            )
+        rows.append(cells)
         previous = row["scene"]
     results = data["results"]
     after = (
@@ -90,7 +94,28 @@ def shade_table(data: dict[str, Any]) -> Table:
         f"median); the first call after 50 ms of idle {results['wake_ms']['after_idle']:.2f} ms, "
         f"the next {results['wake_ms']['next']:.2f} ms (10⁶ vertices, one light, medians)."
     )
+    threads = results.get("threads")
+    if threads:
+        one, *more = threads["threads"]
+        rates = ", ".join(f"{t} {threads['mvert_s'][str(t)]:.1f}" for t in threads["threads"])
+        ups = ", ".join(f"{threads['speedup'][str(t)]['median']:.2f}{TIMES}" for t in more)
+        after += (
+            f" Threads, {threads['scene']} at {count(threads['vertices'])} vertices (a child "
+            f"process per count, interleaved rounds): {rates} million vertices/s; {ups} "
+            f"over {one}."
+        )
     return header, rows, after
+
+
+def times(x: float) -> str:
+    """A speed-up: three significant digits (69.3, 1.71)."""
+    return f"{x:.1f}" if x >= 10 else f"{x:.2f}"
+
+
+def scenes(data: dict[str, Any]) -> list[dict[str, Any]]:
+    """The rows of a ``bench shade`` file, one per scene and size."""
+    rows: list[dict[str, Any]] = data["results"]["scenes"]
+    return rows
 
 
 def normals_table(data: dict[str, Any]) -> Table:
@@ -141,7 +166,7 @@ def cluster_table(data: dict[str, Any]) -> Table:
 
 BENCHES: dict[str, tuple[Callable[[dict[str, Any]], Table], tuple[str, ...]]] = {
     # The table, and the settings that are flags of the command, in the command's order.
-    "shade": (shade_table, ("sizes", "rounds")),
+    "shade": (shade_table, ("sizes", "scenes", "rounds")),
     "normals": (normals_table, ("faces", "settle_s", "rounds")),
     "render": (render_table, ("faces", "size", "rounds")),
     "cluster": (cluster_table, ("vertices", "chunk", "workers", "repeat")),
@@ -154,8 +179,13 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
     bench, settings, machine = data["bench"], data["settings"], data["machine"]
     flags = []
     for key in BENCHES[bench][1]:
+        if key not in settings:  # a setting an older bench did not have
+            continue
         values = settings[key] if isinstance(settings[key], list) else [settings[key]]
-        flags.append(f"--{FLAGS.get(key, key)} {' '.join(map(str, values))}")
+        if key == "scenes":
+            flags.append(f"--scenes '{','.join(values)}'")
+        else:
+            flags.append(f"--{FLAGS.get(key, key)} {' '.join(map(str, values))}")
     command = f"python -m glshade bench {bench} {' '.join(flags)} --json {name}"
     date = machine["date"].replace("T", " ").replace("+00:00", " UTC") + " (results saved)"
     notes = (
@@ -169,6 +199,12 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
             f"; numba {numba['version']} ({numba['threads']} threads, {numba['threading_layer']} "
             f"layer, OMP_WAIT_POLICY={numba['OMP_WAIT_POLICY']})"
         )
+    if "drjit" in settings:
+        drjit = settings["drjit"]
+        notes += f"; Dr.Jit {drjit['version']} (LLVM {drjit['llvm']}, {drjit['threads']} threads)"
+    if "jax" in settings:
+        jax = settings["jax"]
+        notes += f"; JAX {jax['version']}, jaxlib {jax['jaxlib']} ({jax['threads']} threads)"
     return command, machine["cpu"], date, notes
 
 

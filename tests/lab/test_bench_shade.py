@@ -1,10 +1,13 @@
-"""The baselines of ``python -m glshade bench shade`` compute the equation glshade computes, so
-the benchmark compares like with like (checked here; the timing itself is never a test); each
-bench accepts only its own flags and saves its results as JSON with the machine."""
+"""The baselines and peers of ``python -m glshade bench shade`` compute the equation glshade
+computes, so the benchmark compares like with like (checked here; the timing itself is never a
+test); a method that does not is reported as FAILED and not timed; each bench accepts only its
+own flags and saves its results as JSON with the machine (``bench shade`` also as CSV)."""
 
+import csv
 import json
 import types
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 import pytest
@@ -13,22 +16,39 @@ from conftest import require
 import glshade as gs
 from glshade import __main__ as cli
 from glshade import _glshade
-from glshade.lab import timing
+from glshade.lab import bench_shade, timing
 from glshade.lab.baselines import numba_shade, numpy_shade
+from glshade.lab.bench_shade import CSV_COLUMNS, TOLERANCE, smooth_set
 from glshade.lab.machine import identity, machine
-from glshade.lab.scenes import bench_scenes, bench_vertices
+from glshade.lab.peers import drjit_shade, jax_shade, versions
+from glshade.lab.scenes import (
+    bench_scenes,
+    bench_vertices,
+    extra_bench_scenes,
+    scene_names,
+    shade_scenes,
+)
 from glshade.lab.timing import Timing, ratio, time_calibrated, time_rounds
 
 pytestmark = pytest.mark.lab
 
 SCENES = bench_scenes()
+EVERY = shade_scenes()  # the three and the extra four
 
 
-@pytest.mark.parametrize("name", SCENES)
+def _reference(name: str, n: int = 4_000) -> tuple[Any, Any, Any]:
+    """The bench's float32 vertices and `gs.shade`'s float64 exact result on them."""
+    p, normals = bench_vertices(n)
+    exact = gs.shade(
+        p.astype(np.float64), normals.astype(np.float64), EVERY[name], accuracy="exact"
+    )
+    return p, normals, exact
+
+
+@pytest.mark.parametrize("name", EVERY)
 def test_numpy_baseline_is_the_gl_equation(name: str) -> None:
-    p, n = bench_vertices(4_000)
-    reference = gs.shade(p.astype(np.float64), n.astype(np.float64), SCENES[name])
-    got = numpy_shade(p, n, SCENES[name])
+    p, n, reference = _reference(name)
+    got = numpy_shade(p, n, EVERY[name])
     assert got.dtype == np.float32
     # float32 arithmetic: a few ulp of the largest term.
     np.testing.assert_allclose(got, reference, rtol=0, atol=2e-6)
@@ -36,14 +56,36 @@ def test_numpy_baseline_is_the_gl_equation(name: str) -> None:
     assert (reference[:, :3] > 0.05).mean() > 0.9
 
 
-@pytest.mark.parametrize("name", SCENES)
+@pytest.mark.parametrize("name", EVERY)
 def test_numba_baseline_is_the_gl_equation(name: str) -> None:
-    require("numba")
-    shade = numba_shade()
+    _check_compiled("numba", numba_shade, name)
+
+
+@pytest.mark.parametrize("name", EVERY)
+def test_the_drjit_peer_is_the_gl_equation(name: str) -> None:
+    _check_compiled("drjit", drjit_shade, name)
+
+
+@pytest.mark.parametrize("name", EVERY)
+def test_the_jax_peer_is_the_gl_equation(name: str) -> None:
+    _check_compiled("jax", jax_shade, name)
+
+
+def _check_compiled(module: str, make: Any, name: str) -> None:
+    """The peer `make` builds (it needs `module`) computes the equation on scene `name`."""
+    require(module)
+    shade = make()
     assert not isinstance(shade, str), shade
-    p, n = bench_vertices(4_000)
-    reference = gs.shade(p.astype(np.float64), n.astype(np.float64), SCENES[name])
-    np.testing.assert_allclose(shade(p, n, SCENES[name]), reference, rtol=0, atol=2e-6)
+    p, n, reference = _reference(name)
+    got = shade(p, n, EVERY[name])
+    assert got.shape == (4_000, 4) and got.dtype == np.float32
+    np.testing.assert_allclose(got, reference, rtol=0, atol=2e-6)
+
+
+def test_the_peers_name_their_versions() -> None:
+    found = versions()
+    assert {"numba", "drjit", "jax", "jaxlib"} <= set(found)
+    assert all(isinstance(v, str) and v for v in found.values())
 
 
 def test_the_scenes_are_those_of_the_issue() -> None:
@@ -62,21 +104,105 @@ def test_the_scenes_are_those_of_the_issue() -> None:
     assert {"directional", "point attenuated", "point spot"} <= set(kinds[2])
 
 
-def test_bench_shade_runs_prints_every_scene_and_saves_json(
+def test_the_extra_scenes_are_those_of_the_issue() -> None:
+    extra = extra_bench_scenes()
+    assert list(extra) == ["16 mixed", "2 directional", "spot 2.5", "32 point"]
+    mixed = extra["16 mixed"].lights
+    assert len(mixed) == 16 and extra["16 mixed"].viewer[3] == 1
+    kinds = {
+        ("directional" if light.position[3] == 0 else "point")
+        + (" spot" if light.spot_cutoff != 180 else "")
+        for light in mixed
+    }
+    assert kinds == {"directional", "point", "point spot"}
+    two = extra["2 directional"]
+    assert [light.position[3] for light in two.lights] == [0, 0] and two.viewer[3] == 0
+    spot = extra["spot 2.5"]
+    assert [light.spot_exponent for light in spot.lights if light.spot_cutoff != 180] == [2.5]
+    assert [light.position[3] for light in spot.lights] == [1, 1] and spot.viewer[3] == 1
+    points = extra["32 point"].lights
+    assert len(points) == 32
+    assert all(light.position[3] == 1 and light.spot_cutoff == 180 for light in points)
+    assert all(light.linear_attenuation + light.quadratic_attenuation > 0 for light in points)
+
+
+def test_scenes_are_chosen_by_name_and_group(monkeypatch: pytest.MonkeyPatch) -> None:
+    assert scene_names("all") == list(EVERY)
+    assert scene_names("bench") == list(SCENES)
+    # A name's own comma stays in it; a name given twice counts once.
+    assert scene_names("1 point, local viewer,spot 2.5, 8 mixed,spot 2.5") == [
+        "1 point, local viewer",
+        "spot 2.5",
+        "8 mixed",
+    ]
+    assert scene_names("extra,bench")[:4] == list(extra_bench_scenes())
+    for wrong in ("", "1 point", "8 mixed,nine mixed"):
+        with pytest.raises(ValueError, match="no scene"):
+            scene_names(wrong)
+    given: list[dict[str, Any]] = []
+    monkeypatch.setattr(bench_shade, "bench_shade", lambda *args, **kw: given.append(kw) or 0)
+    assert cli.main(["bench", "shade"]) == 0
+    assert cli.main(["bench", "shade", "--scenes", "bench", "--no-threads-check"]) == 0
+    assert given == [
+        {"scenes": list(EVERY), "threads_check": True},
+        {"scenes": list(SCENES), "threads_check": False},
+    ]
+
+
+@pytest.mark.parametrize("name", EVERY)
+def test_the_smooth_set_holds_most_vertices(name: str) -> None:
+    p, n = bench_vertices(4_000)
+    assert smooth_set(p, n, EVERY[name]).mean() > 0.98
+
+
+def test_the_smooth_set_leaves_out_vertices_on_a_kink() -> None:
+    # One vertex on the gate of the point light (n . VP = 0), one on the spot's cone, one that
+    # is well inside both; and a zero normal.
+    point = gs.Scene([gs.Light(position=(1.0, 2.0, 3.0, 1.0))], viewer=(0, 0, 0, 1))
+    p = np.array([[0.0, 0.0, -3.0], [0.0, 0.0, -3.0], [0.0, 0.0, -3.0]])
+    to_light = np.array([1.0, 2.0, 6.0])
+    n = np.array([[2.0, -1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.0, 0.0]])
+    assert n[0] @ to_light == 0
+    assert smooth_set(p, n, point).tolist() == [False, True, False]
+    spot = extra_bench_scenes()["spot 2.5"]
+    light = spot.lights[0]
+    axis = np.asarray(light.spot_direction) / np.linalg.norm(light.spot_direction)
+    side = np.cross(axis, [1.0, 0.0, 0.0])
+    side /= np.linalg.norm(side)
+    edge = np.radians(light.spot_cutoff)
+    on_cone = np.asarray(light.position[:3]) + 2.0 * (np.cos(edge) * axis + np.sin(edge) * side)
+    inside = np.asarray(light.position[:3]) + 2.0 * axis
+    normals = np.array([[0.0, 0.0, 1.0], [0.0, 0.0, 1.0]])
+    assert smooth_set(np.array([on_cone, inside]), normals, spot).tolist() == [False, True]
+
+
+def test_bench_shade_runs_prints_every_scene_and_saves_json_and_csv(
     tmp_path: Path, capsys: pytest.CaptureFixture[str]
 ) -> None:
     path = tmp_path / "b.json"
-    args = ["bench", "shade", "--sizes", "100", "200", "--repeat", "2", "--json", str(path)]
-    assert cli.main(args) == 0
+    args = ["bench", "shade", "--sizes", "100,200", "--repeat", "2", "--json", str(path)]
+    assert cli.main([*args, "--scenes", "bench"]) == 0
     out = capsys.readouterr().out
     for name in SCENES:
         assert f"\n{name}: fast: float32" in out
     assert "per-call overhead" in out and f"wrote {path}" in out
     cpu = machine()
     assert f"CPU: {cpu['cpu']}; glshade's instruction set: {cpu['instruction_set']}" in out
-    assert "of stream" in out and "display" in out and "f64 exact" in out
+    assert "of stream f64 exact" in out  # the header: no display column between them
+    assert "x drjit" in out and "max |error| on the smooth set" in out
+    found = versions()
+    assert f"numba {found['numba']}, drjit {found['drjit']}" in out
+    assert f"jax {found['jax']}, jaxlib {found['jaxlib']}" in out
+    assert "FAILED (" not in out and "not timed\n" not in out
+    # The thread scaling: glshade in two child processes, 1 and 2 threads, the largest size.
+    assert "threads: glshade on 8 mixed, 200 vertices" in out and "2 threads: " in out
     saved = json.loads(path.read_text())
     assert saved["bench"] == "shade" and saved["settings"]["sizes"] == [100, 200]
+    assert saved["settings"]["versions"] == found
+    assert saved["settings"]["scenes"] == list(SCENES)
+    threads = saved["results"]["threads"]
+    assert threads["vertices"] == 200 and set(threads["mvert_s"]) == {"1", "2"}
+    assert len(threads["ms"]["2"]["rounds"]) == 2 and set(threads["speedup"]) == {"2"}
     assert {"cpu", "instruction_set", "threads", "glshade", "numpy", "python"} <= set(
         saved["machine"]
     )
@@ -92,7 +218,51 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json(
             b / o for b, o in zip(r["ms"]["numpy"]["rounds"], glshade["rounds"], strict=True)
         ]
         assert r["speedup"]["numpy"]["median"] == pytest.approx(np.median(per_round))
-        assert {"stream", "display", "exact64"} <= set(r["ms"])
+        assert {"stream", "exact64"} <= set(r["ms"])
+        checked = {"glshade", "exact64", "numpy", "numba", "drjit", "jax"}
+        assert set(r["error_smooth"]) == checked and r["failed"] == {}
+        assert all(e <= TOLERANCE for e in r["error_smooth"].values())
+        assert set(r["mvert_s"]) == {*checked, "stream"} and r["smooth_vertices"] > 0
+    with path.with_suffix(".csv").open(newline="") as file:
+        rows = list(csv.reader(file))
+    assert tuple(rows[0]) == CSV_COLUMNS
+    table = [dict(zip(CSV_COLUMNS, row, strict=True)) for row in rows[1:]]
+    assert len(table) == 3 * 2 * 7  # scenes, sizes, methods
+    first = saved["results"]["scenes"][0]
+    numba = next(row for row in table if row["method"] == "numba")
+    assert (numba["scene"], numba["vertices"]) == ("1 directional", "100")
+    assert float(numba["mvert_s"]) == pytest.approx(first["mvert_s"]["numba"])
+    assert float(numba["ratio_glshade_over_method"]) == first["speedup"]["numba"]["median"]
+    assert float(numba["err_smooth"]) == first["error_smooth"]["numba"]
+    stream = next(row for row in table if row["method"] == "stream")
+    assert stream["err_smooth"] == "" and float(stream["ms_median"]) > 0
+
+
+def test_a_method_off_the_equation_is_failed_and_not_timed(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    calls = []
+
+    def off(p: Any, n: Any, scene: gs.Scene) -> Any:
+        calls.append(len(p))
+        return numpy_shade(p, n, scene) * np.float32(0.99)  # 1% off
+
+    monkeypatch.setattr(bench_shade, "drjit_shade", lambda: off)
+    monkeypatch.setattr(bench_shade, "jax_shade", lambda: "JAX is away: no JAX peer")
+    path = tmp_path / "f.json"
+    code = bench_shade.bench_shade((300,), 1, str(path), ["1 directional"], threads_check=False)
+    assert code == 0 and calls == [300]  # checked once, never timed
+    out = capsys.readouterr().out
+    assert "drjit FAILED (error " in out and "not timed" in out
+    assert "JAX is away: no JAX peer" in out and "threads:" not in out
+    row = json.loads(path.read_text())["results"]["scenes"][0]
+    assert row["failed"]["drjit"].startswith("error ") and row["error_smooth"]["drjit"] > 1e-3
+    assert "drjit" not in row["mvert_s"] and "drjit" not in row["speedup"]
+    assert "jax" not in row["error_smooth"] and "jax" not in row["mvert_s"]
+    with path.with_suffix(".csv").open(newline="") as file:
+        drjit = [r for r in csv.DictReader(file) if r["method"] == "drjit"]
+    assert len(drjit) == 1 and drjit[0]["mvert_s"] == drjit[0]["ratio_glshade_over_method"] == ""
+    assert float(drjit[0]["err_smooth"]) > 1e-3
 
 
 def test_the_cpu_is_named_by_family_and_model_where_its_name_does_not_say() -> None:
@@ -125,6 +295,10 @@ def test_the_streaming_floor_reads_and_writes_what_shade_does(dtype: type) -> No
         ["bench", "shade", "--sizes", "0"],
         ["bench", "shade", "--faces", "100"],  # another bench's flag
         ["bench", "shade", "--settle", "0"],
+        ["bench", "shade", "--scenes", "9 mixed"],
+        ["bench", "shade", "--scenes", ""],
+        ["bench", "normals", "--scenes", "bench"],
+        ["bench", "render", "--no-threads-check"],
         ["bench", "normals", "--sizes", "100"],
         ["bench", "render", "--settle", "0"],
         ["bench", "normals", "--faces", "1"],

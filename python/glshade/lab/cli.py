@@ -16,6 +16,11 @@ def _positive(text: str) -> int:
     return value
 
 
+def _sizes(text: str) -> list[int]:
+    """Vertex counts separated by commas, each a positive integer."""
+    return [_positive(part) for part in text.split(",") if part.strip()]
+
+
 def _at_least_two(text: str) -> int:
     value = int(text)
     if value < 2:
@@ -28,6 +33,15 @@ def _not_negative(text: str) -> float:
     if not value >= 0:
         raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
     return value
+
+
+def _scenes(text: str) -> list[str]:
+    from .scenes import scene_names
+
+    try:
+        return scene_names(text)
+    except ValueError as error:
+        raise argparse.ArgumentTypeError(str(error)) from None
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -70,13 +84,28 @@ def _parser() -> argparse.ArgumentParser:
     )
     bench = commands.add_parser("bench", help="time glshade beside its baselines in the same run")
     which = bench.add_subparsers(dest="what", required=True)
-    shade = which.add_parser("shade", help="gs.shade beside numpy and numba")
+    shade = which.add_parser(
+        "shade", help="gs.shade beside numpy, numba, Dr.Jit and JAX, each checked first"
+    )
     shade.add_argument(
         "--sizes",
-        type=_positive,
+        type=_sizes,
         nargs="+",
-        default=[10_000, 100_000, 1_000_000, 4_000_000],
-        help="vertex counts (default 10^4 10^5 10^6 4*10^6)",
+        default=[[10_000, 100_000, 1_000_000, 4_000_000]],
+        help="vertex counts, separated by spaces or commas (default 10^4 10^5 10^6 4*10^6)",
+    )
+    shade.add_argument(
+        "--scenes",
+        type=_scenes,
+        default="all",
+        help='comma-separated scenes and groups: "bench" (the three scenes "1 directional", '
+        '"1 point, local viewer" and "8 mixed"), "extra" ("16 mixed", "2 directional", '
+        '"spot 2.5", "32 point"), "all" (default: both)',
+    )
+    shade.add_argument(
+        "--no-threads-check",
+        action="store_true",
+        help="leave out glshade on 8 mixed at the largest size with 1 and 2 threads",
     )
     normals = which.add_parser("normals", help="vertex and face normals beside trimesh")
     normals.add_argument("--faces", type=_at_least_two, default=1_000_000, help="default 10^6")
@@ -102,13 +131,15 @@ def _parser() -> argparse.ArgumentParser:
     cluster.add_argument(
         "--dir", help="where the scratch .npy files go (default: the temporary directory)"
     )
+    beside = {"shade": "; a .csv of one row per scene, size and method beside it"}
     benches = ((shade, "shade"), (normals, "normals"), (render, "render"), (cluster, "cluster"))
     for sub, name in benches:
         sub.add_argument("--repeat", type=_positive, default=7, help="rounds (default 7)")
         sub.add_argument(
             "--json",
             default=f"glshade-bench-{name}.json",
-            help=f"where the results go, with the machine (default ./glshade-bench-{name}.json)",
+            help=f"where the results go, with the machine (default ./glshade-bench-{name}.json)"
+            f"{beside.get(name, '')}",
         )
     return parser
 
@@ -141,7 +172,13 @@ def main(argv: Sequence[str] | None = None) -> int:
         from . import bench, bench_shade
 
         if args.what == "shade":
-            return bench_shade.bench_shade(tuple(args.sizes), args.repeat, args.json)
+            return bench_shade.bench_shade(
+                tuple(size for group in args.sizes for size in group),
+                args.repeat,
+                args.json,
+                scenes=args.scenes,
+                threads_check=not args.no_threads_check,
+            )
         if args.what == "render":
             return bench.bench_render(args.faces, args.size, args.repeat, args.json)
         if args.what == "cluster":

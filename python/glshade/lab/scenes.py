@@ -13,7 +13,15 @@ from numpy.typing import NDArray
 
 import glshade as gs
 
-__all__ = ["SceneClass", "bench_scenes", "bench_vertices", "report_classes"]
+__all__ = [
+    "SceneClass",
+    "bench_scenes",
+    "bench_vertices",
+    "extra_bench_scenes",
+    "report_classes",
+    "scene_names",
+    "shade_scenes",
+]
 
 F64 = NDArray[np.float64]
 F32 = NDArray[np.float32]
@@ -54,6 +62,130 @@ def bench_scenes() -> dict[str, gs.Scene]:
         ),
         "8 mixed": gs.Scene(mixed, material=material, viewer=(0, 0, 0, 1)),
     }
+
+
+def extra_bench_scenes() -> dict[str, gs.Scene]:
+    """Four more scenes for ``bench shade``, beyond `bench_scenes`: 16 mixed lights (6
+    directional, 6 attenuated point, 4 spots; local viewer), two directional lights (infinite
+    viewer), a spot of non-integer exponent 2.5 beside a point light (local viewer) and 32
+    attenuated point lights (local viewer); all with the specular term of shininess 32, and
+    lights faint enough that most sums stay below GL's clamp.
+
+    Returns
+    -------
+    dict of str to Scene
+        ``"16 mixed"``, ``"2 directional"``, ``"spot 2.5"`` and ``"32 point"``, in that order.
+    """
+    material = gs.Material(specular=(0.5, 0.5, 0.5, 1.0), shininess=32.0)
+    rng = np.random.default_rng(16)
+    # Above the vertices (x, y in -3..3, z in -1..2; they lie at z -4..-2) or shining from there.
+    above = rng.uniform((-3.0, -3.0, -1.0), (3.0, 3.0, 2.0), (32, 3))
+    dim, faint = (0.1, 0.1, 0.1, 1.0), (0.06, 0.06, 0.06, 1.0)
+    mixed = [
+        *(
+            gs.Light(position=(*map(float, xyz), 0.0), diffuse=dim, specular=dim)
+            for xyz in above[:6] + np.array([0.0, 0.0, 3.0])
+        ),
+        *(
+            gs.Light(
+                position=(*map(float, xyz), 1.0),
+                diffuse=dim,
+                specular=dim,
+                linear_attenuation=0.1 * (i % 3),
+                quadratic_attenuation=0.05 * (i % 2 + 1),
+            )
+            for i, xyz in enumerate(above[6:12])
+        ),
+        *(
+            gs.Light(
+                position=(*map(float, xyz), 1.0),
+                spot_direction=(-0.1 * xyz[0], -0.1 * xyz[1], -1.0),
+                spot_cutoff=(30.0, 45.0, 60.0, 25.0)[i],
+                spot_exponent=(8.0, 2.0, 1.0, 4.0)[i],
+                linear_attenuation=0.1 * (i % 2),
+                diffuse=dim,
+                ambient=(0.03, 0.03, 0.03, 1.0),
+            )
+            for i, xyz in enumerate(above[12:16])
+        ),
+    ]
+    points = [
+        gs.Light(
+            position=(*map(float, xyz), 1.0),
+            diffuse=faint,
+            specular=faint,
+            linear_attenuation=0.1,
+            quadratic_attenuation=0.05,
+        )
+        for xyz in above
+    ]
+    local = (0.0, 0.0, 0.0, 1.0)
+    return {
+        "16 mixed": gs.Scene(mixed, material=material, viewer=local),
+        "2 directional": gs.Scene(
+            [
+                gs.Light(position=(0.3, 0.5, 1.0, 0.0), diffuse=(0.6, 0.6, 0.6, 1.0)),
+                gs.Light(position=(-0.8, 0.2, 1.0, 0.0), diffuse=(0.3, 0.3, 0.4, 1.0)),
+            ],
+            material=material,
+        ),
+        "spot 2.5": gs.Scene(
+            [
+                gs.Light(
+                    position=(0.5, 0.5, 1.0, 1.0),
+                    spot_direction=(-0.1, -0.1, -1.0),
+                    spot_cutoff=35.0,
+                    spot_exponent=2.5,
+                ),
+                gs.Light(position=(-2.0, 1.0, 0.0, 1.0), diffuse=(0.3, 0.3, 0.3, 1.0)),
+            ],
+            material=material,
+            viewer=local,
+        ),
+        "32 point": gs.Scene(points, material=material, viewer=local),
+    }
+
+
+def shade_scenes() -> dict[str, gs.Scene]:
+    """The scenes of ``bench shade`` by name: `bench_scenes`, then `extra_bench_scenes`."""
+    return {**bench_scenes(), **extra_bench_scenes()}
+
+
+def scene_names(text: str) -> list[str]:
+    """The scenes a ``--scenes`` list names, each once, in the order given.
+
+    Parameters
+    ----------
+    text : str
+        Comma-separated names of `shade_scenes` (a name's own comma is kept: ``1 point, local
+        viewer,8 mixed`` is two) or groups: ``bench`` (the three of `bench_scenes`), ``extra``
+        (`extra_bench_scenes`) and ``all``.
+
+    Returns
+    -------
+    list of str
+        Keys of `shade_scenes`.
+
+    Raises
+    ------
+    ValueError
+        For a name that is neither a scene nor a group, or an empty list.
+    """
+    bench, extra = list(bench_scenes()), list(extra_bench_scenes())
+    groups = {"bench": bench, "extra": extra, "all": bench + extra}
+    names: list[str] = []
+    pending = ""
+    for piece in text.split(","):
+        # A piece that names nothing may be the first half of a name with a comma.
+        pending = f"{pending},{piece}" if pending else piece
+        name = pending.strip()
+        if name in groups or name in bench + extra:
+            names += [s for s in groups.get(name, [name]) if s not in names]
+            pending = ""
+    if pending.strip() or not names:
+        known = ", ".join(f'"{name}"' for name in [*groups, *bench, *extra])
+        raise ValueError(f"no scene {pending.strip()!r}: the scenes are {known}")
+    return names
 
 
 def bench_vertices(n: int, seed: int = 0) -> tuple[F32, F32]:
