@@ -13,6 +13,7 @@ import numpy as np
 from dask.delayed import delayed
 from numpy.typing import ArrayLike, NDArray
 
+from ._intake import accuracy_choice
 from ._scene import Scene
 
 __all__ = ["shade_lazily"]
@@ -39,6 +40,9 @@ def shade_lazily(
     except ValueError:
         shapes = ", ".join(f"{name} {x.shape}" for name, x in zip(_NAMES, inputs, strict=False))
         raise ValueError(f"shapes do not broadcast over their leading axes: {shapes}") from None
+    if "accuracy" in shade_kwargs:
+        # The deprecated "display" warns once, at the caller's line, not in every task.
+        shade_kwargs = {**shade_kwargs, "accuracy": accuracy_choice(shade_kwargs["accuracy"])}
     # One empty call checks every option now and gives the result's dtype and leading axis.
     empty = [np.zeros((0, x.shape[-1]), x.dtype) for x in inputs]
     empty_colors = empty[2] if colors is not None else None

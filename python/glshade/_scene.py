@@ -15,6 +15,7 @@ from numpy.typing import ArrayLike
 
 from . import _glshade
 from ._intake import (
+    accuracy_choice,
     choice,
     color,
     colors_checked,
@@ -594,8 +595,8 @@ class Scene:
             As for `shade`; None (the default) plans a call without per-vertex colours.
         color_material_face : {"front_and_back", "front", "back"}
             As for `shade`.
-        accuracy : {"fast", "exact", "display"}
-            As for `shade`.
+        accuracy : {"fast", "exact"}
+            As for `shade`: ``"display"`` is a deprecated alias of ``"fast"`` (it warns).
         strict : bool
             As for `shade`.
         clamp : bool
@@ -627,7 +628,7 @@ class Scene:
             rescale_normal=flag(rescale_normal, "rescale_normal"),
             color_material=optional_choice(color_material, "color_material"),
             color_material_face=choice(color_material_face, "color_material_face"),
-            accuracy=choice(accuracy, "accuracy"),
+            accuracy=accuracy_choice(accuracy),
             strict=flag(strict, "strict"),
             clamp=flag(clamp, "clamp"),
             dtype="float64" if name == "float64" else "float32",

@@ -10,7 +10,7 @@ from typing import ParamSpec, TypeVar, cast
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import choice, flag, matrix, optional_choice, out_array, vertices
+from ._intake import accuracy_choice, choice, flag, matrix, optional_choice, out_array, vertices
 from ._scene import Scene
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
 
@@ -85,12 +85,12 @@ def shade(
         below, are case-insensitive.
     color_material_face : {"front_and_back", "front", "back"}
         The material(s) the colours replace (GL's default: both).
-    accuracy : {"fast", "exact", "display"}
+    accuracy : {"fast", "exact"}
         ``"fast"`` (default) computes in the input's precision; ``"exact"`` computes in float64
-        whatever the input and rounds the result once to its dtype; ``"display"`` computes in
-        the input's precision with cheaper ``exp`` and ``ln``, every output within 2^-10 of the
-        exact value (a quarter of an 8-bit step). The documentation's Accuracy page
-        (docs/pages/guide/accuracy.md) states the error bound of each.
+        whatever the input and rounds the result once to its dtype. The documentation's
+        Accuracy page (docs/pages/guide/accuracy.md) states the error bound of each.
+        ``"display"``, the removed display tier's name, is a deprecated alias of ``"fast"``: it
+        warns (`DeprecationWarning`) and computes exactly what ``"fast"`` does.
     strict : bool
         Reject what GL rejects but glshade allows: shininess and spot exponents above 128.
     clamp : bool
@@ -145,6 +145,8 @@ def shade(
     """
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    # Before the dask branch, so a lazy call warns once, here, and its tasks get "fast".
+    mode = accuracy_choice(accuracy)
     if any(_is_dask(x) for x in (positions, normals, colors)):
         from ._lazy import shade_lazily
 
@@ -156,7 +158,7 @@ def shade(
         options = {
             "modelview": modelview, "normalize": normalize, "rescale_normal": rescale_normal,
             "color_material": color_material, "color_material_face": color_material_face,
-            "accuracy": accuracy, "strict": strict, "clamp": clamp,
+            "accuracy": mode, "strict": strict, "clamp": clamp,
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
@@ -175,7 +177,7 @@ def shade(
         colors=c,
         color_material=optional_choice(color_material, "color_material"),
         color_material_face=choice(color_material_face, "color_material_face"),
-        accuracy=choice(accuracy, "accuracy"),
+        accuracy=mode,
         strict=flag(strict, "strict"),
         clamp=flag(clamp, "clamp"),
         out=out,

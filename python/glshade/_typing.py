@@ -23,6 +23,8 @@ __all__ = [
 FloatArray = NDArray[np.floating[Any]]
 Float64Array = NDArray[np.float64]
 
+# "display" is the removed display tier's name, a deprecated alias of "fast" (it warns): kept
+# here so that code which passes it still type-checks until the name goes.
 Accuracy = Literal["fast", "exact", "display"]
 ColorMaterialMode = Literal["ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"]
 Cull = Literal["back", "front", "front_and_back"]

@@ -1,6 +1,6 @@
 """A Report shows itself: ``repr`` is one paragraph, and in a notebook a table per dtype and
 accuracy mode with its error-against-time figure inline, under 20,000 characters (on a real
-small report and on a made-up one of the full report's 252 rows); without matplotlib a line
+small report and on a made-up one of the full report's 168 rows); without matplotlib a line
 says how to get the figure. The table's numbers are recomputed here from the rows."""
 
 from __future__ import annotations
@@ -67,7 +67,7 @@ def _row(scene: str, dtype: str, accuracy: str, isa: str, error: float, ns: floa
 
 
 def _made_up(classes: int = 14, isas: tuple[str, ...] = ("avx512", "avx2", "baseline")) -> Any:
-    """A report of the full report's shape: 14 classes x 2 dtypes x 3 modes x 3 sets."""
+    """A report of the full report's shape: 14 classes x 2 dtypes x 2 modes x 3 sets."""
     rng = np.random.default_rng(5)
     rows = [
         _row(
@@ -80,7 +80,7 @@ def _made_up(classes: int = 14, isas: tuple[str, ...] = ("avx512", "avx2", "base
         )
         for c in range(classes)
         for dtype in ("float32", "float64")
-        for accuracy in ("fast", "exact", "display")
+        for accuracy in ("fast", "exact")
         for isa in isas
     ]
     settings = {"vertices": 1000, "rounds": 3, "reference": "long double", "kernel": "k"}
@@ -138,7 +138,7 @@ def _expected_table(report: Any) -> list[list[str]]:
         + [f"ns/vertex, {isa}" for isa in isas]
     ]
     for dtype in ("float32", "float64"):
-        for accuracy in ("fast", "exact", "display"):
+        for accuracy in ("fast", "exact"):
             group = [r for r in report.rows if (r.dtype, r.accuracy) == (dtype, accuracy)]
             medians = [statistics.median(r.time_ns for r in group if r.isa == i) for i in isas]
             table.append(
@@ -198,8 +198,8 @@ def test_repr_is_one_short_paragraph(small: Any) -> None:
     assert len(text) < 1000 and "\n" not in text
     worst = max(small.rows, key=lambda r: r.max_error_over_bound)
     assert text.startswith(
-        "glshade Report: 6 rows (1 scene class x float32, float64 x fast, exact, display x "
-        "baseline), 1,000 vertices, 1 round; every row within its bound: worst error / bound "
+        "glshade Report: 4 rows (1 scene class x float32, float64 x fast, exact x baseline), "
+        "1,000 vertices, 1 round; every row within its bound: worst error / bound "
         f"{worst.max_error_over_bound:.2g} (1 directional, {worst.dtype} {worst.accuracy}, "
         "baseline); median "
     )
@@ -220,7 +220,7 @@ def test_the_full_report_shape_stays_under_20000_characters_with_its_figure() ->
     assert "max error 2.50e-01 at k = 1, 1.50e-04 at k = 1024." in words
     assert "max error 3.75e-01 at 80 triangles, 3.75e-02 at 20,480." in words
     text = repr(report)
-    assert text.startswith("glshade Report: 252 rows (14 scene classes x float32, float64 x ")
+    assert text.startswith("glshade Report: 168 rows (14 scene classes x float32, float64 x ")
     assert "avx512, avx2, baseline), 1,000 vertices, 3 rounds; " in text
     over = sum(r.max_error_over_bound > 1 for r in report.rows)
     assert f"; {over} rows over the bound: worst error / bound " in text
@@ -247,7 +247,6 @@ def test_a_figure_of_less_than_a_decade_gets_whole_decades() -> None:
         for mode, error, ns in [
             ("fast", 1.2e-7, 33.0),
             ("exact", 3e-8, 48.0),
-            ("display", 1e-7, 40.0),
         ]
     ]
     figure = error_time(gs.Report(tuple(rows), MACHINE, {"vertices": 1, "rounds": 1}))

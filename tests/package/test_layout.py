@@ -241,7 +241,7 @@ r = gs.report(
 assert type(r) is Report, type(r)
 print(len(r.rows))
 """
-    assert _run(code).split() == ["6"]  # 2 dtypes x 3 accuracy modes
+    assert _run(code).split() == ["4"]  # 2 dtypes x 2 accuracy modes
 
 
 def test_the_imports_of_glshade_make_no_cycle() -> None:

@@ -62,8 +62,8 @@ def _whole_decades(values: list[float]) -> tuple[float, float] | None:
 
 def error_time(report: ReportData) -> Figure:
     """Max error (log) against time per vertex (log), one panel per dtype: one point per row,
-    coloured by scene class, shaped by instruction set, filled for "fast", hollow for
-    "exact" and half filled for "display"; each panel's Pareto front."""
+    coloured by scene class, shaped by instruction set, filled for "fast" and hollow for
+    "exact"; each panel's Pareto front."""
     classes = list(dict.fromkeys(r.scene for r in report.rows))
     palette = matplotlib.colormaps["tab20"]
     colour = {c: palette(i % 20) for i, c in enumerate(classes)}
@@ -85,7 +85,6 @@ def error_time(report: ReportData) -> Figure:
                 marker=MARKERS.get(r.isa, "D"),
                 markersize=6,
                 markerfacecolor=fill,
-                fillstyle="left" if r.accuracy == "display" else "full",
                 markeredgecolor=colour[r.scene],
             )
             point.set_gid(f"row-{i}")
@@ -124,15 +123,6 @@ def error_time(report: ReportData) -> Figure:
             markerfacecolor="none",
             linestyle="none",
             label='hollow: "exact"',
-        ),
-        Line2D(
-            [],
-            [],
-            color="0.2",
-            marker="o",
-            fillstyle="left",
-            linestyle="none",
-            label='half: "display"',
         ),
         Line2D([], [], color="0.3", drawstyle="steps-post", label="Pareto front"),
     ]

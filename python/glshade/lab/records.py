@@ -47,7 +47,7 @@ class Row:
     dtype : str
         ``"float32"`` or ``"float64"``.
     accuracy : str
-        The accuracy mode: ``"fast"``, ``"exact"`` or ``"display"``.
+        The accuracy mode: ``"fast"`` or ``"exact"``.
     isa : str
         The instruction set the row ran with (``"avx512"``, ``"avx2"`` or ``"baseline"``).
     vertices : int

@@ -2,9 +2,9 @@
 instruction set, with the area-light and Gouraud-Phong studies.
 
 Each scene class (`scenes.report_classes`: the benchmark's typical scenes and every class of the
-stiff suite) is shaded in float32 and float64, ``accuracy="fast"``, ``"exact"`` and
-``"display"``, with every instruction set the CPU has (one child process per set: glshade picks
-its set once per process, capped by ``GLSHADE_ISA``). Errors are against the reference: the
+stiff suite) is shaded in float32 and float64, ``accuracy="fast"`` and ``"exact"``, with every
+instruction set the CPU has (one child process per set: glshade picks its set once per process,
+capped by ``GLSHADE_ISA``). Errors are against the reference: the
 same inputs evaluated in long double (x87 extended on x86-64, a 64-bit significand) by
 `baselines.equation` with the stable power ``exp(s·log1p(-|n^ - h^|²/2))``, clamped. The
 references are computed first, then each instruction set's calls are timed in rotating rounds
@@ -41,13 +41,11 @@ from .studies import area_light_convergence, gouraud_vs_phong
 
 __all__ = ["ISAS", "KERNEL", "MODES", "Report", "Row", "report"]
 
-MODES: tuple[tuple[str, Literal["fast", "exact", "display"]], ...] = (
+MODES: tuple[tuple[str, Literal["fast", "exact"]], ...] = (
     ("float32", "fast"),
     ("float32", "exact"),
-    ("float32", "display"),
     ("float64", "fast"),
     ("float64", "exact"),
-    ("float64", "display"),
 )
 ISAS = ("avx512", "avx2", "baseline")
 REFERENCE = (
@@ -252,8 +250,8 @@ def report(
     ...               studies=False, progress=False)
     >>> [(row.dtype, row.accuracy, row.max_error <= row.bound)
     ...  for row in r.rows]  # doctest: +NORMALIZE_WHITESPACE
-    [('float32', 'fast', True), ('float32', 'exact', True), ('float32', 'display', True),
-     ('float64', 'fast', True), ('float64', 'exact', True), ('float64', 'display', True)]
+    [('float32', 'fast', True), ('float32', 'exact', True),
+     ('float64', 'fast', True), ('float64', 'exact', True)]
     """
     for name, value in (("vertices", vertices), ("rounds", rounds)):
         if isinstance(value, bool) or not isinstance(value, int | np.integer) or value < 1:

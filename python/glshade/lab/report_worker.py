@@ -30,7 +30,7 @@ from .scenes import bench_scenes, bench_vertices
 from .timing import BURST, time_calibrated
 
 
-def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact", "display"]) -> dict[str, Any]:
+def _errors(case: dict[str, Any], accuracy: Literal["fast", "exact"]) -> dict[str, Any]:
     """The error fields of a row: `gs.shade` of the case against its reference."""
     dtype = case["dtype"]
     got = gs.shade(case["positions"], case["normals"], case["model"], accuracy=accuracy)[:, :3]

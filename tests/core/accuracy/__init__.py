@@ -1,1 +1,2 @@
-"""Accuracy: stiff cases against 50-digit references, the display tier, hypothesis properties."""
+"""Accuracy: stiff cases against 50-digit references, the deprecated "display" alias, hypothesis
+properties."""
