@@ -7,7 +7,7 @@ use std::mem::MaybeUninit;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::lighting::kernel::{Block, SideColors};
-use crate::lighting::shade::{run_tier, BlockShader, Inputs};
+use crate::lighting::shade::{run_shader, BlockShader, Inputs};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::simd::lanes::Lanes;
@@ -69,7 +69,7 @@ pub fn stream<T: Real>(
     let shader = Stream {
         positions: read_positions,
     };
-    run_tier(&shader, Isa::detect(), inputs, out, stop)
+    run_shader(&shader, Isa::detect(), inputs, out, stop)
 }
 
 #[cfg(test)]

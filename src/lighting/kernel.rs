@@ -216,20 +216,19 @@ fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] 
     }
 }
 
-/// A prepared scene and its plan: the kernel of one `shade` call, whose powers use the
-/// elementary functions of tier `F`, compiled for scenes of shape `S` (whose flags the plan
-/// must have: see [`crate::lighting::shape::fits`]).
+/// A prepared scene and its plan: the kernel of one `shade` call, compiled for scenes of shape
+/// `S` (whose flags the plan must have: see [`crate::lighting::shape::fits`]).
 pub struct Kernel<'a, T: Real, S: Shape = General> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,
     /// Which terms to compute.
     pub plan: &'a Plan,
-    /// The tier and the shape.
+    /// The shape.
     pub compiled: PhantomData<S>,
 }
 
 impl<'a, T: Real, S: Shape> Kernel<'a, T, S> {
-    /// The kernel of `prepared` and `plan` in tier `F`, for shape `S`.
+    /// The kernel of `prepared` and `plan` for shape `S`.
     pub fn new(prepared: &'a Prepared<T>, plan: &'a Plan) -> Self {
         Self {
             prepared,

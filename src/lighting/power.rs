@@ -142,7 +142,7 @@ pub fn squared_minus_one<V: Lanes>(v: V3<V>) -> (V, V::Mask) {
 }
 
 /// `(scale.length · max(â·b̂, 0))^s` for unit `a`, `b` whose dot product is `cos`, with 0^0 = 1,
-/// with the elementary functions of tier `F`.
+/// with the kernel's elementary functions.
 ///
 /// 1 − â·b̂ is taken as x = |â − b̂|²/2, which has no cancellation near the highlight, and the
 /// power as `(1 − x)^s` by squaring on the complement x for the integers s up to

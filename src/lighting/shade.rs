@@ -402,7 +402,7 @@ fn run_shaped<T: Real>(
         type Output = Result<(), Error>;
         fn call<S: Shape>(self) -> Self::Output {
             let kernel = Kernel::<T, S>::new(self.prepared, self.plan);
-            run_tier(&kernel, self.isa, self.inputs, self.out, self.stop)
+            run_shader(&kernel, self.isa, self.inputs, self.out, self.stop)
         }
     }
     let work = Run {
@@ -416,8 +416,8 @@ fn run_shaped<T: Real>(
     on_shape(plan, prepared, isa, work)
 }
 
-/// [`run`] with the kernel of one tier, or any other [`BlockShader`].
-pub(crate) fn run_tier<T: Real, S: BlockShader<T>>(
+/// [`run`] with one shape's kernel, or any other [`BlockShader`].
+pub(crate) fn run_shader<T: Real, S: BlockShader<T>>(
     kernel: &S,
     isa: Isa,
     inputs: Inputs<'_, T>,

@@ -143,8 +143,6 @@ pub trait Lanes:
     type Mask: LaneMask;
     /// The bits of the lanes.
     type Bits: LaneBits;
-    /// The same lanes in `f64` (itself for `f64`): partial sums of many lights are added there.
-    type Wide: Copy + Add<Output = Self::Wide> + Sub<Output = Self::Wide>;
     /// The number of lanes (at most [`MAX_LANES`]).
     const N: usize;
 
@@ -175,10 +173,6 @@ pub trait Lanes:
     fn to_bits(self) -> Self::Bits;
     /// The lanes with bits `b`.
     fn from_bits(b: Self::Bits) -> Self;
-    /// Exactly widened to `f64`.
-    fn widen(self) -> Self::Wide;
-    /// Rounded back from `f64`.
-    fn narrow(w: Self::Wide) -> Self;
 
     /// `self · a + b` lane by lane, rounded once (a fused multiply-add): one instruction with
     /// AVX2 and AVX-512, the same value computed exactly elsewhere, so every instruction set

@@ -12,7 +12,7 @@ use crate::gl::scene::{Scene, Specular};
 use crate::lighting::kernel::Kernel;
 use crate::lighting::plan::Plan;
 use crate::lighting::prepare::{Prepared, ShadeOptions};
-use crate::lighting::shade::{as_uninit, run_tier, Inputs};
+use crate::lighting::shade::{as_uninit, run_shader, Inputs};
 use crate::lighting::shape::{
     fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape,
 };
@@ -123,7 +123,7 @@ fn bits<T: Real, S: Shape>(scene: &Scene, options: &ShadeOptions, isa: Isa) -> V
     };
     let mut out = vec![T::ZERO; 4 * normals.len()];
     let kernel = Kernel::<T, S>::new(&prepared, &plan);
-    run_tier(&kernel, isa, inputs, as_uninit(&mut out), &Stop::new()).unwrap();
+    run_shader(&kernel, isa, inputs, as_uninit(&mut out), &Stop::new()).unwrap();
     out.iter().map(|x| x.to_f64().to_bits()).collect()
 }
 

@@ -79,7 +79,6 @@ impl<V: Lanes> Lanes for Pair<V> {
     type T = V::T;
     type Mask = Pair<V::Mask>;
     type Bits = Pair<V::Bits>;
-    type Wide = Pair<V::Wide>;
     const N: usize = 2 * V::N;
 
     #[inline(always)]
@@ -134,14 +133,6 @@ impl<V: Lanes> Lanes for Pair<V> {
     #[inline(always)]
     fn from_bits(b: Self::Bits) -> Self {
         Pair(V::from_bits(b.0), V::from_bits(b.1))
-    }
-    #[inline(always)]
-    fn widen(self) -> Self::Wide {
-        Pair(self.0.widen(), self.1.widen())
-    }
-    #[inline(always)]
-    fn narrow(w: Self::Wide) -> Self {
-        Pair(V::narrow(w.0), V::narrow(w.1))
     }
     #[inline(always)]
     fn square_error(self, square: Self) -> Self {

@@ -115,7 +115,6 @@ macro_rules! portable {
             type T = $t;
             type Mask = PackMask<N>;
             type Bits = PackBits<$u, N>;
-            type Wide = Pack<f64, N>;
             const N: usize = N;
 
             #[inline(always)]
@@ -169,15 +168,6 @@ macro_rules! portable {
             #[inline(always)]
             fn from_bits(b: PackBits<$u, N>) -> Self {
                 Self(build(|i| <$t>::from_bits(b.0[i])))
-            }
-            #[inline(always)]
-            fn widen(self) -> Pack<f64, N> {
-                Pack(build(|i| f64::from(self.0[i])))
-            }
-            #[inline(always)]
-            #[allow(clippy::cast_possible_truncation, clippy::unnecessary_cast)]
-            fn narrow(w: Pack<f64, N>) -> Self {
-                Self(build(|i| w.0[i] as $t))
             }
         }
 

@@ -17,46 +17,42 @@ use std::arch::x86_64::{
     __m128, __m128d, __m128i, __m256, __m256d, __m256i, __m512, __m512d, __m512i, _mm256_add_epi32,
     _mm256_add_epi64, _mm256_add_pd, _mm256_add_ps, _mm256_and_pd, _mm256_and_ps, _mm256_and_si256,
     _mm256_blend_ps, _mm256_blendv_pd, _mm256_blendv_ps, _mm256_castpd_ps, _mm256_castpd_si256,
-    _mm256_castps256_ps128, _mm256_castps_pd, _mm256_castps_si256, _mm256_castsi256_pd,
-    _mm256_castsi256_ps, _mm256_cmp_pd, _mm256_cmp_ps, _mm256_cvtpd_ps, _mm256_cvtps_pd,
-    _mm256_div_pd, _mm256_div_ps, _mm256_extractf128_ps, _mm256_fmadd_pd, _mm256_fmadd_ps,
-    _mm256_fmsub_pd, _mm256_fmsub_ps, _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd,
-    _mm256_max_ps, _mm256_min_pd, _mm256_min_ps, _mm256_movemask_pd, _mm256_movemask_ps,
-    _mm256_mul_pd, _mm256_mul_ps, _mm256_or_pd, _mm256_or_ps, _mm256_or_si256,
-    _mm256_permute2f128_ps, _mm256_permutevar8x32_ps, _mm256_set1_epi32, _mm256_set1_epi64x,
-    _mm256_set1_pd, _mm256_set1_ps, _mm256_set_m128, _mm256_sll_epi32, _mm256_sll_epi64,
-    _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32, _mm256_srl_epi64, _mm256_storeu_pd,
-    _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64, _mm256_sub_pd, _mm256_sub_ps,
-    _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd, _mm256_unpacklo_ps, _mm256_xor_pd,
-    _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64, _mm512_add_pd, _mm512_add_ps,
-    _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512, _mm512_castps256_ps512,
-    _mm512_castps512_ps256, _mm512_castps_pd, _mm512_castps_si512, _mm512_castsi512_pd,
-    _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask, _mm512_cvtpd_ps, _mm512_cvtps_pd,
-    _mm512_div_pd, _mm512_div_ps, _mm512_extractf64x4_pd, _mm512_fmadd_pd, _mm512_fmadd_ps,
-    _mm512_fmsub_pd, _mm512_fmsub_ps, _mm512_insertf64x4, _mm512_loadu_pd, _mm512_loadu_ps,
-    _mm512_mask_blend_pd, _mm512_mask_blend_ps, _mm512_max_pd, _mm512_max_ps, _mm512_min_pd,
-    _mm512_min_ps, _mm512_mul_pd, _mm512_mul_ps, _mm512_or_si512, _mm512_permutex2var_pd,
-    _mm512_permutex2var_ps, _mm512_set1_epi32, _mm512_set1_epi64, _mm512_set1_pd, _mm512_set1_ps,
-    _mm512_shuffle_f32x4, _mm512_shuffle_f64x2, _mm512_sll_epi32, _mm512_sll_epi64, _mm512_sqrt_pd,
-    _mm512_sqrt_ps, _mm512_srl_epi32, _mm512_srl_epi64, _mm512_storeu_pd, _mm512_storeu_ps,
-    _mm512_sub_epi32, _mm512_sub_epi64, _mm512_sub_pd, _mm512_sub_ps, _mm512_unpackhi_pd,
-    _mm512_unpackhi_ps, _mm512_unpacklo_pd, _mm512_unpacklo_ps, _mm512_xor_si512, _mm_add_epi32,
-    _mm_add_epi64, _mm_add_pd, _mm_add_ps, _mm_and_pd, _mm_and_ps, _mm_and_si128, _mm_andnot_pd,
-    _mm_andnot_ps, _mm_castpd_si128, _mm_castps_si128, _mm_castsi128_pd, _mm_castsi128_ps,
-    _mm_cmpeq_pd, _mm_cmpeq_ps, _mm_cmple_pd, _mm_cmple_ps, _mm_cmplt_pd, _mm_cmplt_ps,
-    _mm_cvtpd_ps, _mm_cvtps_pd, _mm_cvtsi32_si128, _mm_div_pd, _mm_div_ps, _mm_loadu_pd,
-    _mm_loadu_ps, _mm_max_pd, _mm_max_ps, _mm_min_pd, _mm_min_ps, _mm_movehl_ps, _mm_movelh_ps,
-    _mm_movemask_pd, _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps, _mm_or_pd, _mm_or_ps, _mm_or_si128,
-    _mm_set1_epi32, _mm_set1_epi64x, _mm_set1_pd, _mm_set1_ps, _mm_sll_epi32, _mm_sll_epi64,
-    _mm_sqrt_pd, _mm_sqrt_ps, _mm_srl_epi32, _mm_srl_epi64, _mm_storeu_pd, _mm_storeu_ps,
-    _mm_sub_epi32, _mm_sub_epi64, _mm_sub_pd, _mm_sub_ps, _mm_xor_pd, _mm_xor_ps, _CMP_EQ_OQ,
-    _CMP_LE_OQ, _CMP_LT_OQ,
+    _mm256_castps_pd, _mm256_castps_si256, _mm256_castsi256_pd, _mm256_castsi256_ps, _mm256_cmp_pd,
+    _mm256_cmp_ps, _mm256_div_pd, _mm256_div_ps, _mm256_fmadd_pd, _mm256_fmadd_ps, _mm256_fmsub_pd,
+    _mm256_fmsub_ps, _mm256_loadu_pd, _mm256_loadu_ps, _mm256_max_pd, _mm256_max_ps, _mm256_min_pd,
+    _mm256_min_ps, _mm256_movemask_pd, _mm256_movemask_ps, _mm256_mul_pd, _mm256_mul_ps,
+    _mm256_or_pd, _mm256_or_ps, _mm256_or_si256, _mm256_permute2f128_ps, _mm256_permutevar8x32_ps,
+    _mm256_set1_epi32, _mm256_set1_epi64x, _mm256_set1_pd, _mm256_set1_ps, _mm256_sll_epi32,
+    _mm256_sll_epi64, _mm256_sqrt_pd, _mm256_sqrt_ps, _mm256_srl_epi32, _mm256_srl_epi64,
+    _mm256_storeu_pd, _mm256_storeu_ps, _mm256_sub_epi32, _mm256_sub_epi64, _mm256_sub_pd,
+    _mm256_sub_ps, _mm256_unpackhi_pd, _mm256_unpackhi_ps, _mm256_unpacklo_pd, _mm256_unpacklo_ps,
+    _mm256_xor_pd, _mm256_xor_ps, _mm512_add_epi32, _mm512_add_epi64, _mm512_add_pd, _mm512_add_ps,
+    _mm512_and_si512, _mm512_castpd_ps, _mm512_castpd_si512, _mm512_castps_pd, _mm512_castps_si512,
+    _mm512_castsi512_pd, _mm512_castsi512_ps, _mm512_cmp_pd_mask, _mm512_cmp_ps_mask,
+    _mm512_div_pd, _mm512_div_ps, _mm512_fmadd_pd, _mm512_fmadd_ps, _mm512_fmsub_pd,
+    _mm512_fmsub_ps, _mm512_loadu_pd, _mm512_loadu_ps, _mm512_mask_blend_pd, _mm512_mask_blend_ps,
+    _mm512_max_pd, _mm512_max_ps, _mm512_min_pd, _mm512_min_ps, _mm512_mul_pd, _mm512_mul_ps,
+    _mm512_or_si512, _mm512_permutex2var_pd, _mm512_permutex2var_ps, _mm512_set1_epi32,
+    _mm512_set1_epi64, _mm512_set1_pd, _mm512_set1_ps, _mm512_shuffle_f32x4, _mm512_shuffle_f64x2,
+    _mm512_sll_epi32, _mm512_sll_epi64, _mm512_sqrt_pd, _mm512_sqrt_ps, _mm512_srl_epi32,
+    _mm512_srl_epi64, _mm512_storeu_pd, _mm512_storeu_ps, _mm512_sub_epi32, _mm512_sub_epi64,
+    _mm512_sub_pd, _mm512_sub_ps, _mm512_unpackhi_pd, _mm512_unpackhi_ps, _mm512_unpacklo_pd,
+    _mm512_unpacklo_ps, _mm512_xor_si512, _mm_add_epi32, _mm_add_epi64, _mm_add_pd, _mm_add_ps,
+    _mm_and_pd, _mm_and_ps, _mm_and_si128, _mm_andnot_pd, _mm_andnot_ps, _mm_castpd_si128,
+    _mm_castps_si128, _mm_castsi128_pd, _mm_castsi128_ps, _mm_cmpeq_pd, _mm_cmpeq_ps, _mm_cmple_pd,
+    _mm_cmple_ps, _mm_cmplt_pd, _mm_cmplt_ps, _mm_cvtsi32_si128, _mm_div_pd, _mm_div_ps,
+    _mm_loadu_pd, _mm_loadu_ps, _mm_max_pd, _mm_max_ps, _mm_min_pd, _mm_min_ps, _mm_movemask_pd,
+    _mm_movemask_ps, _mm_mul_pd, _mm_mul_ps, _mm_or_pd, _mm_or_ps, _mm_or_si128, _mm_set1_epi32,
+    _mm_set1_epi64x, _mm_set1_pd, _mm_set1_ps, _mm_sll_epi32, _mm_sll_epi64, _mm_sqrt_pd,
+    _mm_sqrt_ps, _mm_srl_epi32, _mm_srl_epi64, _mm_storeu_pd, _mm_storeu_ps, _mm_sub_epi32,
+    _mm_sub_epi64, _mm_sub_pd, _mm_sub_ps, _mm_xor_pd, _mm_xor_ps, _CMP_EQ_OQ, _CMP_LE_OQ,
+    _CMP_LT_OQ,
 };
 use std::mem::MaybeUninit;
 use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Not, Sub};
 
 use super::sse2_fma::fma_f32x4;
-use super::{LaneBits, LaneMask, Lanes, Pair, V3};
+use super::{LaneBits, LaneMask, Lanes, V3};
 
 /// The binary operators of a register type, one intrinsic each.
 macro_rules! binary {
@@ -198,14 +194,13 @@ macro_rules! bits {
 /// closure might stay out of line, compiled without the target features.
 macro_rules! float_lanes {
     (
-        $name:ident, $t:ty, $reg:ty, $lanes:expr, $mask:ident, $bits:ident, $wide:ty,
+        $name:ident, $t:ty, $reg:ty, $lanes:expr, $mask:ident, $bits:ident,
         set1 $set1:ident, load $load:ident, store $store:ident,
         add $add:ident, sub $sub:ident, mul $mul:ident, div $div:ident, sqrt $sqrt:ident,
         min $min:ident, max $max:ident, to_bits $to_bits:ident, from_bits $from_bits:ident,
         neg |$nx:ident| $neg:expr,
         cmp |$ca:ident, $cb:ident, $op:ident| $cmp:expr,
         select |$sm:ident, $sa:ident, $sb:ident| $select:expr,
-        widen |$wx:ident| $widen:expr, narrow |$nw:ident| $narrow:expr,
         square_error $square_error:tt, mul_add $mul_add:tt, rows $rows:tt
     ) => {
         #[doc = concat!(stringify!($lanes), " lanes of `", stringify!($t), "` in one register.")]
@@ -228,7 +223,6 @@ macro_rules! float_lanes {
             type T = $t;
             type Mask = $mask;
             type Bits = $bits;
-            type Wide = $wide;
             const N: usize = $lanes;
 
             #[inline(always)]
@@ -299,18 +293,6 @@ macro_rules! float_lanes {
             #[allow(unused_unsafe)]
             fn from_bits(b: $bits) -> Self {
                 Self(unsafe { $from_bits(b.0) })
-            }
-            #[inline(always)]
-            #[allow(unused_unsafe)]
-            fn widen(self) -> $wide {
-                let $wx = self.0;
-                unsafe { $widen }
-            }
-            #[inline(always)]
-            #[allow(unused_unsafe)]
-            fn narrow(w: $wide) -> Self {
-                let $nw = w;
-                Self(unsafe { $narrow })
             }
             float_lanes!(@square_error $square_error);
             float_lanes!(@mul_add $mul_add);
@@ -401,7 +383,7 @@ bits!(
 );
 
 float_lanes!(
-    F32x4, f32, __m128, 4, MaskF32x4, BitsU32x4, Pair<F64x2>,
+    F32x4, f32, __m128, 4, MaskF32x4, BitsU32x4,
     set1 _mm_set1_ps, load _mm_loadu_ps, store _mm_storeu_ps,
     add _mm_add_ps, sub _mm_sub_ps, mul _mm_mul_ps, div _mm_div_ps, sqrt _mm_sqrt_ps,
     min _mm_min_ps, max _mm_max_ps, to_bits _mm_castps_si128, from_bits _mm_castsi128_ps,
@@ -412,15 +394,13 @@ float_lanes!(
         _ => _mm_cmpeq_ps(a, b),
     },
     select |m, a, b| _mm_or_ps(_mm_and_ps(m, a), _mm_andnot_ps(m, b)),
-    widen |x| Pair(F64x2(_mm_cvtps_pd(x)), F64x2(_mm_cvtps_pd(_mm_movehl_ps(x, x)))),
-    narrow |w| _mm_movelh_ps(_mm_cvtpd_ps(w.0 .0), _mm_cvtpd_ps(w.1 .0)),
     square_error default,
     mul_add (|a, b, c| fma_f32x4(a, b, c)),
     rows default
 );
 
 float_lanes!(
-    F64x2, f64, __m128d, 2, MaskF64x2, BitsU64x2, F64x2,
+    F64x2, f64, __m128d, 2, MaskF64x2, BitsU64x2,
     set1 _mm_set1_pd, load _mm_loadu_pd, store _mm_storeu_pd,
     add _mm_add_pd, sub _mm_sub_pd, mul _mm_mul_pd, div _mm_div_pd, sqrt _mm_sqrt_pd,
     min _mm_min_pd, max _mm_max_pd, to_bits _mm_castpd_si128, from_bits _mm_castsi128_pd,
@@ -431,8 +411,6 @@ float_lanes!(
         _ => _mm_cmpeq_pd(a, b),
     },
     select |m, a, b| _mm_or_pd(_mm_and_pd(m, a), _mm_andnot_pd(m, b)),
-    widen |x| F64x2(x),
-    narrow |w| w.0,
     square_error default,
     mul_add default,
     rows default
@@ -485,7 +463,7 @@ bits!(
 );
 
 float_lanes!(
-    F32x8, f32, __m256, 8, MaskF32x8, BitsU32x8, Pair<F64x4>,
+    F32x8, f32, __m256, 8, MaskF32x8, BitsU32x8,
     set1 _mm256_set1_ps, load _mm256_loadu_ps, store _mm256_storeu_ps,
     add _mm256_add_ps, sub _mm256_sub_ps, mul _mm256_mul_ps, div _mm256_div_ps,
     sqrt _mm256_sqrt_ps, min _mm256_min_ps, max _mm256_max_ps,
@@ -497,18 +475,13 @@ float_lanes!(
         _ => _mm256_cmp_ps::<_CMP_EQ_OQ>(a, b),
     },
     select |m, a, b| _mm256_blendv_ps(b, a, m),
-    widen |x| Pair(
-        F64x4(_mm256_cvtps_pd(_mm256_castps256_ps128(x))),
-        F64x4(_mm256_cvtps_pd(_mm256_extractf128_ps::<1>(x))),
-    ),
-    narrow |w| _mm256_set_m128(_mm256_cvtpd_ps(w.1 .0), _mm256_cvtpd_ps(w.0 .0)),
     square_error (|x, square| _mm256_fmsub_ps(x, x, square)),
     mul_add (|a, b, c| _mm256_fmadd_ps(a, b, c)),
     rows (load3_f32x8, store4_f32x8)
 );
 
 float_lanes!(
-    F64x4, f64, __m256d, 4, MaskF64x4, BitsU64x4, F64x4,
+    F64x4, f64, __m256d, 4, MaskF64x4, BitsU64x4,
     set1 _mm256_set1_pd, load _mm256_loadu_pd, store _mm256_storeu_pd,
     add _mm256_add_pd, sub _mm256_sub_pd, mul _mm256_mul_pd, div _mm256_div_pd,
     sqrt _mm256_sqrt_pd, min _mm256_min_pd, max _mm256_max_pd,
@@ -520,8 +493,6 @@ float_lanes!(
         _ => _mm256_cmp_pd::<_CMP_EQ_OQ>(a, b),
     },
     select |m, a, b| _mm256_blendv_pd(b, a, m),
-    widen |x| F64x4(x),
-    narrow |w| w.0,
     square_error (|x, square| _mm256_fmsub_pd(x, x, square)),
     mul_add (|a, b, c| _mm256_fmadd_pd(a, b, c)),
     rows default
@@ -731,7 +702,7 @@ unsafe fn store4_f64x8([r, g, b, a]: [__m512d; 4], flat: &mut [MaybeUninit<f64>]
 }
 
 float_lanes!(
-    F32x16, f32, __m512, 16, Mask16, BitsU32x16, Pair<F64x8>,
+    F32x16, f32, __m512, 16, Mask16, BitsU32x16,
     set1 _mm512_set1_ps, load _mm512_loadu_ps, store _mm512_storeu_ps,
     add _mm512_add_ps, sub _mm512_sub_ps, mul _mm512_mul_ps, div _mm512_div_ps,
     sqrt _mm512_sqrt_ps, min _mm512_min_ps, max _mm512_max_ps,
@@ -746,23 +717,13 @@ float_lanes!(
         _ => _mm512_cmp_ps_mask::<_CMP_EQ_OQ>(a, b),
     },
     select |m, a, b| _mm512_mask_blend_ps(m, b, a),
-    widen |x| Pair(
-        F64x8(_mm512_cvtps_pd(_mm512_castps512_ps256(x))),
-        F64x8(_mm512_cvtps_pd(std::arch::x86_64::_mm256_castpd_ps(
-            _mm512_extractf64x4_pd::<1>(_mm512_castps_pd(x)),
-        ))),
-    ),
-    narrow |w| _mm512_castpd_ps(_mm512_insertf64x4::<1>(
-        _mm512_castps_pd(_mm512_castps256_ps512(_mm512_cvtpd_ps(w.0 .0))),
-        std::arch::x86_64::_mm256_castps_pd(_mm512_cvtpd_ps(w.1 .0)),
-    )),
     square_error (|x, square| _mm512_fmsub_ps(x, x, square)),
     mul_add (|a, b, c| _mm512_fmadd_ps(a, b, c)),
     rows (load3_f32x16, store4_f32x16)
 );
 
 float_lanes!(
-    F64x8, f64, __m512d, 8, Mask8, BitsU64x8, F64x8,
+    F64x8, f64, __m512d, 8, Mask8, BitsU64x8,
     set1 _mm512_set1_pd, load _mm512_loadu_pd, store _mm512_storeu_pd,
     add _mm512_add_pd, sub _mm512_sub_pd, mul _mm512_mul_pd, div _mm512_div_pd,
     sqrt _mm512_sqrt_pd, min _mm512_min_pd, max _mm512_max_pd,
@@ -777,8 +738,6 @@ float_lanes!(
         _ => _mm512_cmp_pd_mask::<_CMP_EQ_OQ>(a, b),
     },
     select |m, a, b| _mm512_mask_blend_pd(m, b, a),
-    widen |x| F64x8(x),
-    narrow |w| w.0,
     square_error (|x, square| _mm512_fmsub_pd(x, x, square)),
     mul_add (|a, b, c| _mm512_fmadd_pd(a, b, c)),
     rows (load3_f64x8, store4_f64x8)
