@@ -97,12 +97,18 @@ def shade_table(data: dict[str, Any]) -> Table:
     threads = results.get("threads")
     if threads:
         one, *more = threads["threads"]
-        rates = ", ".join(f"{t} {threads['mvert_s'][str(t)]:.1f}" for t in threads["threads"])
+
+        def label(t: int) -> str:
+            return f"{t} thread{'s' if t > 1 else ''}"
+
+        rates = ", ".join(
+            f"{label(t)} {threads['mvert_s'][str(t)]:.1f}" for t in threads["threads"]
+        )
         ups = ", ".join(f"{threads['speedup'][str(t)]['median']:.2f}{TIMES}" for t in more)
         after += (
             f" Threads, {threads['scene']} at {count(threads['vertices'])} vertices (a child "
             f"process per count, interleaved rounds): {rates} million vertices/s; {ups} "
-            f"over {one}."
+            f"{label(one)}'s speed (median of the per-round ratios)."
         )
     return header, rows, after
 
