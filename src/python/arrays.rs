@@ -183,7 +183,8 @@ pub fn write<'py, T: Element>(
 /// A new C-contiguous array of `shape`, filled by `write` before Python sees it; it starts
 /// uninitialised, as numpy's own ufunc results do (clearing it would cost a pass over memory as
 /// long as shading one light), and a failed allocation is numpy's `MemoryError`. Results of at
-/// least [`crate::memory::recycle::RECYCLED_BYTES`] take a pooled buffer ([`Recycled`]).
+/// least [`crate::memory::recycle::RECYCLED_BYTES`] take a pooled buffer ([`Recycled`]), which
+/// a [`ResultMemory`] holds as the array's base; smaller ones numpy's allocator.
 #[allow(unsafe_code)]
 pub fn filled<'py, T: Element>(
     py: Python<'py>,
@@ -194,12 +195,22 @@ pub fn filled<'py, T: Element>(
     let bytes = shape
         .iter()
         .try_fold(std::mem::size_of::<T>(), |b, &d| b.checked_mul(d));
-    if let Some(buffer) = bytes.and_then(Recycled::take) {
-        return filled_from(py, &mut dims, buffer, write);
-    }
-    // SAFETY: as rust-numpy's own `PyArray::new`: a fresh array of T's descriptor (whose
-    // reference PyArray_NewFromDescr steals), C order, numpy's allocator; a null result is
-    // numpy's error, which `from_owned_ptr_or_err` takes.
+    let owner = match bytes.and_then(Recycled::take) {
+        Some(mut buffer) => {
+            let data = buffer.as_mut_ptr();
+            Some((data, Bound::new(py, ResultMemory { _buffer: buffer })?))
+        }
+        None => None,
+    };
+    let (data, flags) = match &owner {
+        Some((data, _)) => (data.cast(), npyffi::NPY_ARRAY_CARRAY),
+        None => (std::ptr::null_mut(), 0),
+    };
+    // SAFETY: as rust-numpy's own `PyArray::new`: a C-ordered array of T's descriptor (whose
+    // reference PyArray_NewFromDescr steals), in numpy's allocator (null data) or over a pooled
+    // buffer, page-aligned and at least as long as the array (`Recycled::take`), which its
+    // owner keeps alive as the array's base (PyArray_SetBaseObject steals the reference it is
+    // given); a null result is numpy's error, which `from_owned_ptr_or_err` takes.
     let array: Bound<'py, PyArrayDyn<T>> = unsafe {
         let ptr = PY_ARRAY_API.PyArray_NewFromDescr(
             py,
@@ -208,15 +219,22 @@ pub fn filled<'py, T: Element>(
             rank(&dims)?,
             dims.as_mut_ptr(),
             std::ptr::null_mut(),
-            std::ptr::null_mut(),
-            0,
+            data,
+            flags,
             std::ptr::null_mut(),
         );
-        Bound::from_owned_ptr_or_err(py, ptr)?.cast_into_unchecked()
+        let array = Bound::from_owned_ptr_or_err(py, ptr)?;
+        if let Some((_, owner)) = owner {
+            let base = owner.into_ptr();
+            if PY_ARRAY_API.PyArray_SetBaseObject(py, array.as_ptr().cast(), base) != 0 {
+                return Err(PyErr::fetch(py));
+            }
+        }
+        array.cast_into_unchecked()
     };
-    // SAFETY: the array is C-contiguous, owns its data and nothing else refers to it yet;
-    // MaybeUninit<T> has T's layout and may hold anything. The array reaches Python only when
-    // `write` returned Ok, which means it wrote every element; on an error it is dropped unread.
+    // SAFETY: the array is C-contiguous and nothing else refers to its memory yet; MaybeUninit<T>
+    // has T's layout and may hold anything. The array reaches Python only when `write` returned
+    // Ok, which means it wrote every element; on an error it is dropped unread.
     let data = unsafe { std::slice::from_raw_parts_mut(array.data().cast(), array.len()) };
     write(data)?;
     Ok(array)
@@ -227,45 +245,6 @@ pub fn filled<'py, T: Element>(
 #[pyclass(frozen, module = "glshade._glshade")]
 pub struct ResultMemory {
     _buffer: Recycled,
-}
-
-/// [`filled`] in a pooled `buffer` (already faulted in when it served an earlier result).
-#[allow(unsafe_code)]
-fn filled_from<'py, T: Element>(
-    py: Python<'py>,
-    dims: &mut [npy_intp],
-    mut buffer: Recycled,
-    write: impl FnOnce(&mut [MaybeUninit<T>]) -> PyResult<()>,
-) -> PyResult<Bound<'py, PyArrayDyn<T>>> {
-    let data = buffer.as_mut_ptr();
-    let owner = Bound::new(py, ResultMemory { _buffer: buffer })?;
-    // SAFETY: a C-contiguous, aligned, writeable array of T's descriptor (whose reference
-    // PyArray_NewFromDescr steals) over `data`, which `owner` keeps alive: it becomes the
-    // array's base (PyArray_SetBaseObject steals the reference given it). The buffer is
-    // page-aligned and at least as long as the array (`Recycled::take`).
-    let array: Bound<'py, PyArrayDyn<T>> = unsafe {
-        let ptr = PY_ARRAY_API.PyArray_NewFromDescr(
-            py,
-            npyffi::get_type_object(py, npyffi::NpyTypes::PyArray_Type),
-            T::get_dtype(py).into_dtype_ptr(),
-            rank(dims)?,
-            dims.as_mut_ptr(),
-            std::ptr::null_mut(),
-            data.cast(),
-            npyffi::NPY_ARRAY_CARRAY,
-            std::ptr::null_mut(),
-        );
-        let array = Bound::from_owned_ptr_or_err(py, ptr)?;
-        if PY_ARRAY_API.PyArray_SetBaseObject(py, array.as_ptr().cast(), owner.into_ptr()) != 0 {
-            return Err(PyErr::fetch(py));
-        }
-        array.cast_into_unchecked()
-    };
-    // SAFETY: as in `filled`: nothing else refers to the memory yet, and Python sees the array
-    // only once `write` has written every element.
-    let data = unsafe { std::slice::from_raw_parts_mut(array.data().cast(), array.len()) };
-    write(data)?;
-    Ok(array)
 }
 
 /// A new C-contiguous array of `shape` filled with zeros (numpy's `calloc`: fresh pages cost

@@ -40,7 +40,7 @@ from .baselines import (
     numpy_shade,
 )
 from .bench import save
-from .machine import describe, machine
+from .machine import describe, machine, usable_cpus
 from .peers import drjit_shade, glshade_threads, jax_shade, jax_threads, versions
 from .scenes import bench_scenes, bench_vertices, shade_scenes
 from .timing import BURST, Timing, ratio, time_rounds
@@ -468,7 +468,7 @@ def _print_scaling(scaling: dict[str, Any], repeat: int) -> None:
     print(
         f"\nthreads: glshade on 8 mixed, {scaling['vertices']:,} vertices, each thread count in "
         f"its own process (RAYON_NUM_THREADS), {repeat} interleaved rounds; "
-        f"{len(os.sched_getaffinity(0))} usable CPUs"
+        f"{usable_cpus()} usable CPUs"
     )
     for t in scaling["threads"]:
         line = f"  {t} thread{'s' if t > 1 else ''}: {rates[str(t)]:.1f} million vertices/s "

@@ -14,10 +14,17 @@ import numpy as np
 
 import glshade as gs
 
-__all__ = ["describe", "identity", "instruction_set", "machine"]
+__all__ = ["describe", "identity", "instruction_set", "machine", "usable_cpus"]
 
 # The x86 feature flags that decide glshade's instruction set (and numpy's and numba's).
 FLAGS = ("sse2", "avx", "avx2", "fma", "avx512f", "avx512bw", "avx512dq", "avx512vl")
+
+
+def usable_cpus() -> int:
+    """The CPUs this process may run on (its affinity mask where the system has one)."""
+    if hasattr(os, "sched_getaffinity"):
+        return len(os.sched_getaffinity(0))
+    return os.cpu_count() or 1
 
 
 def instruction_set() -> str:
@@ -99,7 +106,7 @@ def machine() -> dict[str, Any]:
         (UTC, ISO 8601).
     """
     model, flags = _cpu()
-    usable = len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count()
+    usable = usable_cpus()
     threads = os.environ.get("RAYON_NUM_THREADS")
     return {
         "cpu": model,

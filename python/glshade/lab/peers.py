@@ -56,6 +56,7 @@ from .baselines import (
     constants,
     light_table,
 )
+from .machine import usable_cpus
 
 __all__ = ["drjit_shade", "glshade_threads", "jax_shade", "jax_threads", "versions"]
 
@@ -68,12 +69,12 @@ def glshade_threads() -> int:
     given = os.environ.get("RAYON_NUM_THREADS", "")
     if given.isdigit() and int(given) > 0:
         return int(given)
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    return usable_cpus()
 
 
 def jax_threads() -> int:
     """XLA:CPU's threads: the CPUs in this process's affinity mask when JAX's backend starts."""
-    return len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else os.cpu_count() or 1
+    return usable_cpus()
 
 
 def versions() -> dict[str, str]:
