@@ -25,8 +25,9 @@
 //! | `lab` | the streaming floor of `bench shade` (feature `lab`, on with `python`) |
 //! | `render` | camera, clipping, rasterisation, visibility, the shading passes |
 //! | `normals` | face and vertex normals, the vertex-to-face adjacency |
-//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade` |
+//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade`; the metallic-roughness model |
 //! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
+//! | `gltf` | glTF state: the metallic-roughness material, punctual lights, the scene |
 //! | `numbers` | `exp`/`ln` over lanes, `Real`, matrix helpers |
 //! | `simd` | `f32`/`f64` behind one trait, the lanes of each instruction set, dispatch |
 //! | `memory` | fallible allocation, zeroed scratch pages |
@@ -47,6 +48,8 @@ mod lighting;
 
 mod gl;
 
+mod gltf;
+
 mod numbers;
 
 mod simd;
@@ -66,6 +69,17 @@ pub use gl::scene::{Scene, Specular, ValidScene};
 pub use gl::vertex_colors::VertexColors;
 pub use lighting::prepare::{Accuracy, ShadeOptions};
 pub use lighting::shade::{describe, shade, shade_uninit};
+
+/// The glTF 2.0 metallic-roughness model as pyrender evaluates it: its scene, material and
+/// punctual lights (world coordinates, `f64`), and `shade`, `shade_uninit` and `describe` over
+/// arrays of `f32` or `f64`.
+pub mod metallic_roughness {
+    pub use crate::gltf::light::{Light, Punctual};
+    pub use crate::gltf::material::Material;
+    pub use crate::gltf::scene::{Scene, ValidScene};
+    pub use crate::lighting::metallic_roughness::shade::{describe, shade, shade_uninit, Options};
+    pub use crate::render::render_metallic_roughness as render;
+}
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use numbers::real::Real;
 pub use render::camera::{look_at, orthographic, perspective, Camera};

@@ -3,10 +3,13 @@
 //! for the scene's shape ([`shape`]) and runs the one equation ([`kernel`], with the specular and
 //! spot powers of [`power`]) block by block over rayon's threads ([`shade`]).
 //!
-//! Uses [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`] and
+//! The glTF metallic-roughness model ([`metallic_roughness`]) runs through the same driver.
+//!
+//! Uses [`crate::gltf`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`] and
 //! [`crate::errors`].
 
 pub mod kernel;
+pub mod metallic_roughness;
 pub mod plan;
 pub mod power;
 pub mod prepare;

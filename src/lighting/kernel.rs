@@ -198,7 +198,7 @@ fn unclamped<V: Lanes>(x: V, finite: V::Mask) -> V {
 
 /// An output colour: `rgb` and `alpha`, clamped unless `clamp` is off (one branch per block).
 #[inline(always)]
-fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] {
+pub(crate) fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] {
     if clamp {
         [
             clamp01(rgb.x, finite),

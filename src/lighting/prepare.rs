@@ -17,7 +17,7 @@ use crate::simd::lanes::{Lanes, Scalar, V3};
 /// Each of the three RGB values of `c`, saturated at
 /// ±[`Float::COLOR_SATURATION`](crate::simd::float::Float::COLOR_SATURATION) and rounded to `T`.
 #[inline]
-fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
+pub(crate) fn rgb<T: Real>(c: &[f64]) -> [T; 3] {
     let sat = T::COLOR_SATURATION.to_f64();
     [c[0], c[1], c[2]].map(|x| T::from_f64(x.clamp(-sat, sat)))
 }
@@ -25,7 +25,7 @@ fn rgb<T: Real>(c: [f64; 4]) -> [T; 3] {
 /// The RGBA of `c`, saturated and rounded to `T`.
 #[inline]
 fn rgba<T: Real>(c: [f64; 4]) -> [T; 4] {
-    let [r, g, b] = rgb::<T>(c);
+    let [r, g, b] = rgb::<T>(&c);
     let sat = T::COLOR_SATURATION.to_f64();
     [r, g, b, T::from_f64(c[3].clamp(-sat, sat))]
 }
@@ -256,7 +256,7 @@ impl<T: Real> Transform<T> {
 }
 
 /// Rounds an `f64` vector to the kernel's type, saturating at ±`T::MAX` (instead of ±inf).
-fn cast_saturating<T: Real>(v: DVec3) -> [T; 3] {
+pub(crate) fn cast_saturating<T: Real>(v: DVec3) -> [T; 3] {
     let max = T::MAX.to_f64();
     v.to_array().map(|x| T::from_f64(x.clamp(-max, max)))
 }
@@ -422,9 +422,9 @@ fn prepare_light<T: Real>(
     };
     Ok(PreparedLight {
         source,
-        ambient: rgb(light.ambient),
-        diffuse: rgb(light.diffuse),
-        specular: rgb(light.specular),
+        ambient: rgb(&light.ambient),
+        diffuse: rgb(&light.diffuse),
+        specular: rgb(&light.specular),
     })
 }
 
@@ -470,7 +470,7 @@ impl<T: Real> Prepared<T> {
         Ok(Self {
             lights,
             materials: [&scene.material, &scene.back_material].map(SideMaterial::new),
-            global_ambient: rgb(scene.global_ambient),
+            global_ambient: rgb(&scene.global_ambient),
             viewer,
             transform,
             normalize: options.normalize,

@@ -202,13 +202,16 @@ impl<T: Real, S: BlockShader<T>> Task<'_, '_, T, S> {
     }
 }
 
-/// Checks the arguments of [`shade`] that do not depend on the scene.
-fn check_arrays<T: Real>(
-    scene: &Scene,
+/// Checks the lengths of one call's arrays: one normal (and colour row, of width 3 or 4) per
+/// position, and `planes` planes of RGBA rows in `out`.
+///
+/// # Errors
+/// A value error naming the array, the length expected and the length found.
+pub(crate) fn check_rows<T: Real>(
     positions: &[[T; 3]],
     normals: &[[T; 3]],
     colors: Option<VertexColors<'_, T>>,
-    options: &ShadeOptions,
+    planes: usize,
     out_len: usize,
 ) -> Result<(), Error> {
     let n = positions.len();
@@ -227,18 +230,29 @@ fn check_arrays<T: Real>(
             )));
         }
     }
-    match (colors.is_some(), options.color_material.is_some()) {
-        (true, false) => return Err(Error::value("colors need a color_material mode, got None")),
-        (false, true) => return Err(Error::value("color_material needs colors, got None")),
-        _ => {}
-    }
-    let planes = scene.output_count();
     if out_len != planes * n * 4 {
         return Err(Error::value(format!(
             "out must hold {planes} x {n} x 4 values, got {out_len}"
         )));
     }
     Ok(())
+}
+
+/// Checks the arguments of [`shade`] that do not depend on the scene.
+fn check_arrays<T: Real>(
+    scene: &Scene,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    options: &ShadeOptions,
+    out_len: usize,
+) -> Result<(), Error> {
+    match (colors.is_some(), options.color_material.is_some()) {
+        (true, false) => return Err(Error::value("colors need a color_material mode, got None")),
+        (false, true) => return Err(Error::value("color_material needs colors, got None")),
+        _ => {}
+    }
+    check_rows(positions, normals, colors, scene.output_count(), out_len)
 }
 
 /// Lights `positions` with `normals` (both (n, 3), model coordinates) under `scene`, writing

@@ -1,0 +1,126 @@
+//! The BRDF of one light at a block of vertices, pyrender's `compute_brdf` term by term:
+//!
+//! ```text
+//! F = f0 + (1 − f0)·(1 − v·h)^5                        Schlick's Fresnel (RGB)
+//! G = nv/(nv(1 − k) + k) · nl/(nl(1 − k) + k)          Smith-Schlick, k = (r + 1)²/8
+//! D = a²/(π·((n·h)²(a² − 1) + 1)²)                     GGX, a = r²
+//! f = (1 − F)·c_diff/π + F·G·D/(4·nl·nv + 0.001)
+//! ```
+//!
+//! with nl = clamp(n·l, 0.001, 1), nv = clamp(|n·v|, 0.001, 1), n·h and v·h clamped to [0, 1],
+//! and r the perceptual roughness raised to 0.04. D's denominator is formed as
+//! a² + (1 − a²)·|n × ĥ|² (the same value, since 1 − (n·ĥ)² = |n × ĥ|² for unit vectors):
+//! near the highlight of a smooth surface 1 − (n·ĥ)² cancels, and rounding n·ĥ alone would cost
+//! up to 2/a² ≈ 8·10⁵ ulp of D at the least roughness.
+
+use crate::numbers::real::Real;
+use crate::simd::lanes::{normalize_or_zero_fast, Lanes, V3};
+
+/// pyrender's `min_roughness`: the least perceptual roughness, and the dielectric f0.
+pub const MIN_ROUGHNESS: f64 = 0.04;
+
+/// The least n·l and |n·v| (pyrender's clamps), so a light behind the surface still adds its
+/// 0.001 share and the specular denominator never vanishes.
+pub const LEAST_COSINE: f64 = 0.001;
+
+/// What the BRDF needs of the material, in `T`, per call.
+#[derive(Clone, Copy, Debug)]
+pub struct Surface<T: Real> {
+    /// a² = r⁴, the GGX parameter squared.
+    pub a2: T,
+    /// k = (r + 1)²/8.
+    pub k: T,
+    /// f0 = mix(0.04, base colour, metallic), RGB.
+    pub f0: [T; 3],
+    /// (1 − f0)·c_diff/π with c_diff = base colour·0.96·(1 − metallic), RGB: the diffuse
+    /// term is this times (1 − (1 − v·h)^5), since 1 − F = (1 − f0)(1 − (1 − v·h)^5).
+    pub diffuse: [T; 3],
+}
+
+impl<T: Real> Surface<T> {
+    /// The surface of a material's linear base colour (RGB), metallic and roughness factors.
+    pub fn new(base: [f64; 3], metallic: f64, roughness: f64) -> Self {
+        let m = metallic.clamp(0.0, 1.0);
+        let r = roughness.clamp(MIN_ROUGHNESS, 1.0);
+        let f0 = base.map(|c| MIN_ROUGHNESS * (1.0 - m) + c * m);
+        let diffuse: [f64; 3] = std::array::from_fn(|i| {
+            let c_diff = base[i] * (1.0 - MIN_ROUGHNESS) * (1.0 - m);
+            (1.0 - f0[i]) * c_diff / std::f64::consts::PI
+        });
+        Self {
+            a2: T::from_f64((r * r) * (r * r)),
+            k: T::from_f64((r + 1.0) * (r + 1.0) / 8.0),
+            f0: f0.map(T::from_f64),
+            diffuse: diffuse.map(T::from_f64),
+        }
+    }
+
+    /// Some channel has a diffuse term (c_diff ≠ 0).
+    pub fn has_diffuse(&self) -> bool {
+        self.diffuse.iter().any(|&c| c != T::ZERO)
+    }
+}
+
+/// The cosines of one light at a block: n·l and |n·v| after pyrender's clamps.
+#[derive(Clone, Copy)]
+pub struct Cosines<V> {
+    /// nl = clamp(n·l, 0.001, 1).
+    pub nl: V,
+    /// nv = clamp(|n·v|, 0.001, 1).
+    pub nv: V,
+}
+
+/// f (RGB) for unit (or zero) `n`, `v` and `l`; the diffuse part only when `diffuse` (a
+/// uniform branch: without it c_diff is 0).
+#[inline(always)]
+pub fn brdf<T: Real, V: Lanes<T = T>>(
+    surface: &Surface<T>,
+    n: V3<V>,
+    v: V3<V>,
+    l: V3<V>,
+    c: Cosines<V>,
+    diffuse: bool,
+) -> V3<V> {
+    let zero = V::splat(T::ZERO);
+    let one = V::splat(T::ONE);
+    let h = normalize_or_zero_fast(l + v);
+    let vh = v.dot(h).clamp(T::ZERO, T::ONE);
+    // Fresnel: q = (1 − v·h)^5 by multiplication (GLSL's pow(x, 5.0)).
+    let t = one - vh;
+    let t2 = t * t;
+    let q = t2 * t2 * t;
+    // Occlusion.
+    let (k, one_k) = (V::splat(surface.k), V::splat(T::ONE - surface.k));
+    let g = (c.nv / c.nv.mul_add(one_k, k)) * (c.nl / c.nl.mul_add(one_k, k));
+    // Distribution: 1 − (n·h)² as |n × h|², and n·h ≤ 0 clamped to 0 (denominator 1).
+    let cross = V3 {
+        x: n.y * h.z - n.z * h.y,
+        y: n.z * h.x - n.x * h.z,
+        z: n.x * h.y - n.y * h.x,
+    };
+    let a2 = V::splat(surface.a2);
+    let sin2 = cross.dot(cross).min(one);
+    let den = V::select(
+        n.dot(h).gt(zero),
+        sin2.mul_add(V::splat(T::ONE - surface.a2), a2),
+        one,
+    );
+    let pi = V::splat(T::from_f64(std::f64::consts::PI));
+    let d = a2 / (pi * den * den);
+    let four_nl_nv = V::splat(T::from_f64(4.0)) * c.nl * c.nv;
+    let specular = g * d / (four_nl_nv + V::splat(T::from_f64(LEAST_COSINE)));
+    let channel = |f0: V::T, diffuse_part: V::T| {
+        let fresnel = V::splat(T::ONE - f0).mul_add(q, V::splat(f0));
+        let spec = fresnel * specular;
+        if diffuse {
+            V::splat(diffuse_part).mul_add(one - q, spec)
+        } else {
+            spec
+        }
+    };
+    V3 {
+        x: channel(surface.f0[0], surface.diffuse[0]),
+        y: channel(surface.f0[1], surface.diffuse[1]),
+        z: channel(surface.f0[2], surface.diffuse[2]),
+    }
+}

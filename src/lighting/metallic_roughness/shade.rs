@@ -1,0 +1,101 @@
+//! The entry points of the metallic-roughness model: `shade` and `describe`, as for the GL
+//! equation ([`crate::lighting::shade`]), with the same threads, blocks and instruction sets.
+
+use std::mem::MaybeUninit;
+
+use glam::DMat4;
+
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
+use crate::gl::vertex_colors::VertexColors;
+use crate::gltf::scene::ValidScene;
+use crate::lighting::metallic_roughness::kernel::Kernel;
+use crate::lighting::prepare::ColorClamp;
+use crate::lighting::shade::{as_uninit, check_rows, run_shader, Inputs};
+use crate::numbers::real::{block_lanes, Real};
+use crate::simd::dispatch::Isa;
+
+/// The options of a metallic-roughness call.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Options {
+    /// Model to world coordinates: positions become M·p, normals (M⁻¹)ᵀ·n before they are
+    /// normalised; `None` is the identity (the arrays are in world coordinates).
+    pub model: Option<DMat4>,
+    /// Whether the colours are clamped to [0, 1] (pyrender clamps after its gamma, which
+    /// commutes with the clamp).
+    pub clamp: ColorClamp,
+}
+
+/// Lights `positions` with `normals` (both (n, 3), world coordinates unless `options.model`)
+/// under `scene`, writing n linear RGBA rows into `out` (4n values), computed in `T`.
+///
+/// Normals are normalised; a vertex colour (RGB or RGBA) multiplies the result, alpha
+/// included, as pyrender's `color_multiplier` does. A vertex whose normal or colour is not
+/// finite, or whose position is not finite when some light shines, gets NaN; every other
+/// output is finite. Rows are independent: the result is the same for any number of threads
+/// and on any CPU. `stop` is polled as by [`crate::lighting::shade::shade`].
+///
+/// # Errors
+/// A value error for mismatched lengths or an invalid `model`; a memory error for the task
+/// list; [`Error::interrupted`] when `stop` was requested before the call finished.
+pub fn shade<T: Real>(
+    scene: &ValidScene,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    options: &Options,
+    out: &mut [T],
+    stop: &Stop,
+) -> Result<(), Error> {
+    shade_uninit(
+        scene,
+        positions,
+        normals,
+        colors,
+        options,
+        as_uninit(out),
+        stop,
+    )
+}
+
+/// [`shade`] into memory that need not be initialised: every element of `out` is written
+/// when this returns `Ok`.
+///
+/// # Errors
+/// As [`shade`].
+pub fn shade_uninit<T: Real>(
+    scene: &ValidScene,
+    positions: &[[T; 3]],
+    normals: &[[T; 3]],
+    colors: Option<VertexColors<'_, T>>,
+    options: &Options,
+    out: &mut [MaybeUninit<T>],
+    stop: &Stop,
+) -> Result<(), Error> {
+    check_rows(positions, normals, colors, 1, out.len())?;
+    let kernel = Kernel::<T>::new(scene, options.model.as_ref(), options.clamp)?;
+    let inputs = Inputs {
+        positions,
+        normals,
+        colors,
+    };
+    run_shader(&kernel, Isa::detect(), inputs, out, stop)
+}
+
+/// One line saying what [`shade`] computes for `scene` in `T`: the arithmetic, the instruction
+/// set and the plan.
+///
+/// # Errors
+/// As [`shade`] for an invalid `model`.
+pub fn describe<T: Real>(scene: &ValidScene, options: &Options) -> Result<String, Error> {
+    let kernel = Kernel::<T>::new(scene, options.model.as_ref(), options.clamp)?;
+    let isa = Isa::detect();
+    Ok(format!(
+        "metallic-roughness (pyrender's mesh.frag): float{} arithmetic, {}, {} vertices per \
+         block; {}",
+        8 * std::mem::size_of::<T>(),
+        isa.name(),
+        block_lanes::<T>(isa),
+        kernel.plan()
+    ))
+}
