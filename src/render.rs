@@ -4,8 +4,8 @@
 //! ([`visibility`]), and the visible pixels are lit ([`passes`]).
 //!
 //! The render layer, top of the core: besides those four, [`camera`] (view and projection)
-//! and [`mesh`] (what is drawn). Uses every layer below it: [`crate::normals`],
-//! [`crate::lighting`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
+//! [`mesh`] (what is drawn) and [`shader`] (the lighting model: GL's or glTF's). Uses every layer below it: [`crate::normals`],
+//! [`crate::lighting`], [`crate::gl`], [`crate::gltf`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
 //! and [`crate::errors`].
 
 pub mod camera;
@@ -13,6 +13,7 @@ pub mod clip;
 pub mod mesh;
 pub mod passes;
 pub mod raster;
+pub mod shader;
 pub mod visibility;
 
 use glam::{DMat4, DVec4};
@@ -23,8 +24,9 @@ use crate::errors::stop::Stop;
 use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
+use crate::gltf::scene::{Scene as GltfSceneData, ValidScene as GltfScene};
+use crate::lighting::metallic_roughness::shade::Options;
 use crate::lighting::prepare::{ColorClamp, ShadeOptions};
-use crate::lighting::shade::shade;
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::normals::adjacency::index;
@@ -35,6 +37,7 @@ use crate::render::clip::clip_triangle;
 use crate::render::mesh::Mesh;
 use crate::render::passes::{Frame, Pass};
 use crate::render::raster::{Cull, Triangle, Viewport};
+use crate::render::shader::Shader;
 use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
@@ -220,10 +223,10 @@ fn setup<T: Real>(
 /// Renders `mesh` seen by `camera` under `scene` into `image` ((height, width, 4) RGBA, row 0
 /// at the top) and `depth` ((height, width) window depth in [0, 1], 1 where nothing is drawn).
 ///
-/// Lights and the viewer are in eye coordinates, as for [`shade`]; positions reach eye
+/// Lights and the viewer are in eye coordinates, as for [`crate::lighting::shade::shade`]; positions reach eye
 /// coordinates through `camera.view · options.model`. Pixels no triangle covers get
 /// `options.background`. A face with a vertex that is not finite after the transform is not
-/// drawn; a NaN normal or colour gives NaN pixels, as in [`shade`]. The result is the same for
+/// drawn; a NaN normal or colour gives NaN pixels, as in [`crate::lighting::shade::shade`]. The result is the same for
 /// any number of threads.
 ///
 /// `stop` is polled by every pass, at least once per task of rows, faces or triangles; once it
@@ -244,32 +247,79 @@ pub fn render<T: Real>(
     stop: &Stop,
 ) -> Result<(), Error> {
     validate(mesh, camera, options, image.len(), depth.len())?;
-    let modelview = camera.view * options.model;
     let shade_options = ShadeOptions {
-        modelview: Some(modelview),
+        modelview: Some(camera.view * options.model),
         normalize: options.normalize,
         rescale_normal: options.rescale_normal,
         color_material: options.color_material,
         clamp: options.clamp,
         ..ShadeOptions::default()
     };
+    let shader = Shader::Gl {
+        scene,
+        options: shade_options,
+    };
+    draw(shader, mesh, camera, options, image, depth, stop)
+}
+
+/// [`render`] with the glTF metallic-roughness model: `scene` is in world coordinates, its
+/// camera position replaced by `camera`'s eye, and vertex colours multiply the result (as
+/// pyrender's `color_multiplier`). `options.normalize`, `rescale_normal` and `color_material`
+/// do not apply (the model always normalises).
+///
+/// # Errors
+/// As [`render`].
+pub fn render_metallic_roughness<T: Real>(
+    scene: &GltfScene,
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    image: &mut [T],
+    depth: &mut [T],
+    stop: &Stop,
+) -> Result<(), Error> {
+    validate(mesh, camera, options, image.len(), depth.len())?;
+    let eye = camera.view.inverse().w_axis.truncate().to_array();
+    let placed = GltfSceneData {
+        camera_position: eye,
+        ..(**scene).clone()
+    };
+    let shader = Shader::MetallicRoughness {
+        scene: placed.validated()?,
+        options: Options {
+            model: Some(options.model),
+            clamp: options.clamp,
+        },
+    };
+    draw(shader, mesh, camera, options, image, depth, stop)
+}
+
+/// The pipeline of [`render`] after validation, lit by `shader`.
+fn draw<T: Real>(
+    shader: Shader<'_>,
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    image: &mut [T],
+    depth: &mut [T],
+    stop: &Stop,
+) -> Result<(), Error> {
     // A call on no vertices checks the options against the scene before any work is done.
     let no_colors = mesh.colors.map(|c| VertexColors {
         data: &c.data[..0],
         width: c.width,
     });
-    shade::<T>(scene, &[], &[], no_colors, &shade_options, &mut [], stop)?;
+    shader.shade::<T>(&[], &[], no_colors, &mut [], stop)?;
 
     let viewport = options.viewport;
-    let to_clip = camera.projection * modelview;
+    let to_clip = camera.projection * camera.view * options.model;
     let triangles = setup(mesh, to_clip, viewport, options.cull, stop)?;
     // Zeroed: a large buffer is mapped, not written; visibility clears it band by band.
     let mut ids = Zeroed::<u32>::new(viewport.width * viewport.height, "the triangle ids")?;
     visibility(&triangles, viewport, &mut ids, depth, stop)?;
     let pass = Pass {
-        scene,
+        shader,
         mesh,
-        options: shade_options,
         frame: Frame::new(viewport, &triangles, &ids)?,
         background: options.background,
     };
@@ -418,9 +468,11 @@ mod tests {
         assert!(interrupted(err));
         let scene = emission_scene().validated().unwrap();
         let pass = Pass {
-            scene: &scene,
+            shader: Shader::Gl {
+                scene: &scene,
+                options: ShadeOptions::default(),
+            },
             mesh: &quad(),
-            options: ShadeOptions::default(),
             frame: Frame::new(viewport, &triangles, &ids).unwrap(),
             background: [0.0; 4],
         };

@@ -1,5 +1,5 @@
-//! Lighting the visible pixels, through the one lighting equation
-//! [`crate::lighting::shade::shade`]:
+//! Lighting the visible pixels, through the render's [`Shader`] (GL's equation or the
+//! metallic-roughness model):
 //!
 //! - **Gouraud**: the vertices are lit, and the colours interpolated (GL's smooth shading).
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
@@ -17,10 +17,8 @@ use rayon::prelude::*;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::gl::scene::{Scene, ValidScene};
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::prepare::{ColorClamp, ShadeOptions};
-use crate::lighting::shade::shade;
+use crate::lighting::shade::as_uninit;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
 use crate::normals::adjacency::index;
@@ -28,34 +26,11 @@ use crate::normals::face_normals;
 use crate::numbers::real::Real;
 use crate::render::mesh::Mesh;
 use crate::render::raster::{Triangle, Viewport};
+use crate::render::shader::Shader;
 use crate::render::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.
 const FACES_PER_TASK: usize = 4096;
-
-/// The RGBA of a fragment from its colours in the scene's output order (`colour(k)` is colour
-/// k, front before back, primary before secondary): the back ones for a back-facing triangle
-/// of a two-sided scene, the primary and secondary summed, and clamped unless `clamp` is off
-/// (high dynamic range).
-#[inline]
-fn fragment(
-    scene: &Scene,
-    front: bool,
-    clamp: bool,
-    colour: impl Fn(usize) -> [f64; 4],
-) -> [f64; 4] {
-    let per_side = 1 + usize::from(scene.separate_specular);
-    let base = per_side * usize::from(scene.two_side && !front);
-    let mut c = colour(base);
-    if scene.separate_specular {
-        let s = colour(base + 1);
-        for k in 0..3 {
-            let sum = c[k] + s[k];
-            c[k] = if clamp { sum.clamp(0.0, 1.0) } else { sum };
-        }
-    }
-    c
-}
 
 /// Σ weights[j] · rows[face[j]]: an attribute of the face's corners at a pixel.
 #[inline]
@@ -182,12 +157,10 @@ impl<'a> Frame<'a> {
 
 /// One lighting pass over a frame: what every mode reads.
 pub struct Pass<'a, T> {
-    /// Lights, materials and light model.
-    pub scene: &'a ValidScene,
+    /// The lighting model and its options.
+    pub shader: Shader<'a>,
     /// The mesh.
     pub mesh: &'a Mesh<'a, T>,
-    /// The `shade` options, with the modelview.
-    pub options: ShadeOptions,
     /// The visible pixels.
     pub frame: Frame<'a>,
     /// The colour of the pixels no triangle covers.
@@ -198,20 +171,18 @@ impl<T: Real> Pass<'_, T> {
     /// Gouraud: the vertices are lit with `normals` (one per vertex), the colours interpolated.
     ///
     /// # Errors
-    /// Those of [`shade`]; a memory error for the vertex colours.
+    /// Those of [`Shader::shade`]; a memory error for the vertex colours.
     pub fn gouraud(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
-        let clamp = self.options.clamp == ColorClamp::On;
+        let clamp = self.shader.clamp();
         let mesh = self.mesh;
         let n = mesh.vertices.len();
-        let len = count(&[self.scene.output_count(), n, 4], "the vertex colours")?;
+        let len = count(&[self.shader.outputs(), n, 4], "the vertex colours")?;
         let mut colours = Zeroed::<T>::new(len, "the vertex colours")?;
-        shade(
-            self.scene,
+        self.shader.shade(
             mesh.vertices,
             normals,
             mesh.colors,
-            &self.options,
-            &mut colours,
+            as_uninit(&mut colours),
             stop,
         )?;
         let rows = colours.as_chunks::<4>().0;
@@ -219,7 +190,7 @@ impl<T: Real> Pass<'_, T> {
             .paint(image, self.background, stop, |t, x, y, _| {
                 let face = mesh.faces[t.face as usize];
                 let weights = t.weights_at(x, y);
-                fragment(self.scene, t.front, clamp, |plane| {
+                self.shader.fragment(t.front, clamp, |plane| {
                     // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
                     let c = interpolate(&rows[plane * n..(plane + 1) * n], face, weights);
                     if clamp {
@@ -235,9 +206,9 @@ impl<T: Real> Pass<'_, T> {
     /// (one per face) or the face normal.
     ///
     /// # Errors
-    /// Those of [`shade`] and [`face_normals`]; a memory error for the per-face buffers.
+    /// Those of [`Shader::shade`] and [`face_normals`]; a memory error for the per-face buffers.
     pub fn flat(&self, image: &mut [T], stop: &Stop) -> Result<(), Error> {
-        let clamp = self.options.clamp == ColorClamp::On;
+        let clamp = self.shader.clamp();
         let mesh = self.mesh;
         let m = mesh.faces.len();
         let computed;
@@ -281,20 +252,13 @@ impl<T: Real> Pass<'_, T> {
                 data,
                 width: c.width,
             });
-        let len = count(&[self.scene.output_count(), m, 4], "the face colours")?;
+        let len = count(&[self.shader.outputs(), m, 4], "the face colours")?;
         let mut colours = Zeroed::<T>::new(len, "the face colours")?;
-        shade(
-            self.scene,
-            &positions,
-            normals,
-            colors,
-            &self.options,
-            &mut colours,
-            stop,
-        )?;
+        self.shader
+            .shade(&positions, normals, colors, as_uninit(&mut colours), stop)?;
         self.frame
             .paint(image, self.background, stop, |t, _, _, _| {
-                fragment(self.scene, t.front, clamp, |plane| {
+                self.shader.fragment(t.front, clamp, |plane| {
                     shaded(&colours, m, plane, t.face as usize)
                 })
             })
@@ -304,9 +268,9 @@ impl<T: Real> Pass<'_, T> {
     /// pixel, which are then lit in one call.
     ///
     /// # Errors
-    /// Those of [`shade`]; a memory error for the pixel buffers.
+    /// Those of [`Shader::shade`]; a memory error for the pixel buffers.
     pub fn phong(&self, normals: &[[T; 3]], image: &mut [T], stop: &Stop) -> Result<(), Error> {
-        let clamp = self.options.clamp == ColorClamp::On;
+        let clamp = self.shader.clamp();
         let (mesh, frame) = (self.mesh, &self.frame);
         let total: usize = frame.counts.iter().sum();
         let color_width = mesh.colors.map_or(0, |c| c.width);
@@ -346,47 +310,19 @@ impl<T: Real> Pass<'_, T> {
             data: &colors,
             width: c.width,
         });
-        let len = count(&[self.scene.output_count(), total, 4], "the pixel colours")?;
+        let len = count(&[self.shader.outputs(), total, 4], "the pixel colours")?;
         let mut colours = Zeroed::<T>::new(len, "the pixel colours")?;
-        shade(
-            self.scene,
+        self.shader.shade(
             &positions,
             &pixel_normals,
             colors,
-            &self.options,
-            &mut colours,
+            as_uninit(&mut colours),
             stop,
         )?;
         self.frame
             .paint(image, self.background, stop, |t, _, _, k| {
-                fragment(self.scene, t.front, clamp, |plane| {
-                    shaded(&colours, total, plane, k)
-                })
+                self.shader
+                    .fragment(t.front, clamp, |plane| shaded(&colours, total, plane, k))
             })
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fragments_pick_the_side_and_sum_the_specular() {
-        let colours = [
-            [0.5, 0.25, 0.0, 0.5],
-            [0.75, 0.0, 0.5, 1.0],
-            [0.1, 0.2, 0.3, 0.4],
-            [0.0, 0.0, 0.0, 1.0],
-        ];
-        let mut scene = Scene::default();
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[0]);
-        scene.two_side = true;
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[1]);
-        scene.separate_specular = true;
-        assert_eq!(
-            fragment(&scene, true, true, |k| colours[k]),
-            [1.0, 0.25, 0.5, 0.5]
-        );
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[2]);
     }
 }
