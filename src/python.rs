@@ -14,6 +14,7 @@ use pyo3::prelude::*;
 mod arrays;
 mod camera;
 mod faces;
+mod gltf;
 mod normals;
 mod render;
 mod runtime;
@@ -45,6 +46,8 @@ fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
 mod _glshade {
     #[pymodule_export]
     use super::camera::{look_at, orthographic, perspective};
+    #[pymodule_export]
+    use super::gltf::{describe_gltf, shade_gltf, GltfScene};
     #[pymodule_export]
     use super::normals::{face_normals, vertex_normals};
     #[pymodule_export]

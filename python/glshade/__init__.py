@@ -9,7 +9,7 @@
 
 from typing import TYPE_CHECKING, Any
 
-from . import glsl, meshes, presets
+from . import glsl, gltf, meshes, presets
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
@@ -41,6 +41,7 @@ __all__ = [
     "disc_light",
     "face_normals",
     "glsl",
+    "gltf",
     "meshes",
     "presets",
     "rectangle_light",

@@ -7,17 +7,20 @@ from numpy.typing import NDArray
 
 __all__ = [
     "MAX_SIZE",
+    "GltfScene",
     "Lights",
     "Material",
     "Scene",
     "__version__",
     "describe",
+    "describe_gltf",
     "face_normals",
     "look_at",
     "orthographic",
     "perspective",
     "render",
     "shade",
+    "shade_gltf",
     "stream",
     "vertex_normals",
 ]
@@ -135,7 +138,7 @@ def orthographic(
 def render(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],
-    scene: Scene,
+    scene: Scene | GltfScene,
     *,
     view: NDArray[np.float64],
     projection: NDArray[np.float64],
@@ -153,3 +156,45 @@ def render(
     background: NDArray[np.float64],
     clamp: bool,
 ) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...
+
+@final
+class GltfScene:
+    def __new__(
+        cls,
+        *,
+        lights: list[
+            tuple[
+                str,
+                tuple[float, ...],
+                float,
+                tuple[float, ...],
+                tuple[float, ...],
+                float,
+                float,
+            ]
+        ],
+        base_color: tuple[float, ...],
+        metallic: float,
+        roughness: float,
+        emissive: tuple[float, ...],
+        ambient_light: tuple[float, ...],
+        camera_position: tuple[float, ...],
+    ) -> GltfScene: ...
+
+def shade_gltf(
+    positions: NDArray[np.floating[Any]],
+    normals: NDArray[np.floating[Any]],
+    scene: GltfScene,
+    *,
+    colors: NDArray[np.floating[Any]] | None,
+    model: NDArray[np.float64] | None,
+    clamp: bool,
+    out: NDArray[np.floating[Any]] | None,
+) -> NDArray[np.floating[Any]]: ...
+def describe_gltf(
+    scene: GltfScene,
+    *,
+    model: NDArray[np.float64] | None,
+    clamp: bool,
+    dtype: str,
+) -> str: ...

@@ -22,10 +22,12 @@ from ._intake import (
     transform,
     warn_if_bytes,
 )
+from ._pyrender import is_pyrender_scene, render_pyrender
 from ._render_input import render_input
 from ._scene import Scene
 from ._transfer import Transfer, apply_transfer, transfer_name
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, Shading, Space
+from .gltf import Scene as GltfScene
 
 __all__ = ["render"]
 
@@ -33,8 +35,8 @@ __all__ = ["render"]
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | None = ...,
-    scene: Scene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | None = ...,
+    scene: Scene | GltfScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -50,15 +52,15 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
-    transfer: Transfer = ...,
+    transfer: Transfer | None = ...,
     clamp: bool = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | None = ...,
-    scene: Scene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | None = ...,
+    scene: Scene | GltfScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -74,15 +76,15 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
-    transfer: Transfer = ...,
+    transfer: Transfer | None = ...,
     clamp: bool = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | None = ...,
-    scene: Scene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | None = ...,
+    scene: Scene | GltfScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -98,14 +100,14 @@ def render(
     cull: Cull | None = ...,
     background: ArrayLike = ...,
     lights_in: Space = ...,
-    transfer: Transfer = ...,
+    transfer: Transfer | None = ...,
     clamp: bool = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | None = None,
-    scene: Scene | Camera | None = None,
+    faces: ArrayLike | Scene | GltfScene | None = None,
+    scene: Scene | GltfScene | Camera | None = None,
     camera: Camera | None = None,
     *,
     width: int = 512,
@@ -121,7 +123,7 @@ def render(
     cull: Cull | None = None,
     background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
     lights_in: Space = "eye",
-    transfer: Transfer = "linear",
+    transfer: Transfer | None = None,
     clamp: bool = True,
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
@@ -134,12 +136,22 @@ def render(
         ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``) or a ``trimesh.Scene`` (flattened
         by ``scene.to_mesh()``, its graph's transforms applied), or a ``(vertices, faces)``
         tuple as `glshade.meshes` returns: ``render(mesh)``, ``render(mesh, scene)``,
-        ``render(mesh, camera)``, ``render(mesh, scene, camera)``.
+        ``render(mesh, camera)``, ``render(mesh, scene, camera)``. Or a ``pyrender.Scene``,
+        alone: ``render(pyrender_scene, width=, height=)`` draws its meshes with their
+        materials, its lights, ambient light and main camera as pyrender's stock shader does
+        (glTF metallic-roughness, Phong shading, ``transfer="gamma2.2"`` by default, its
+        ``bg_color`` where nothing is drawn; textures, shadows and blending are not drawn: see
+        the documentation's glTF page, docs/pages/guide/gltf.md); of the options below only
+        `transfer`, `clamp` and `depth` apply, and the image is float64.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle; counter-clockwise on screen is the front.
-    scene : Scene, optional
+    scene : Scene or gltf.Scene, optional
         Lights and viewer in eye coordinates (as for `shade`; see `lights_in`), materials,
-        light model. With
+        light model. A `glshade.gltf.Scene` lights the mesh with glTF's metallic-roughness
+        model as pyrender does: in world coordinates (`lights_in` does not apply), its camera
+        position replaced by the camera's eye, vertex colours multiplying the result (the GL
+        options `color_material`, `color_material_face`, `normalize` and `rescale_normal` do
+        not apply); ``transfer="gamma2.2"`` then gives pyrender's output. With
         ``two_side``, back-facing triangles get the back colour; with ``separate_specular``,
         the specular colour is added after interpolation and the sum clamped (GL's colour sum).
         None (the default): a white key light from the upper left of the default view and a
@@ -195,9 +207,11 @@ def render(
         before ``glLight``), so an orbiting camera sees them stay put; GL's own viewers
         (0, 0, 1, 0) and (0, 0, 0, 1) stay with the eye. The default scene is always in world
         coordinates.
-    transfer : {"linear", "srgb", "gamma2.2"}
-        How the image's RGB is encoded (alpha and the depth are not): ``"linear"`` (the
-        default) returns the lighting equation's values as they are, GL's output without
+    transfer : str or None
+        How the image's RGB is encoded (alpha and the depth are not): ``"linear"``,
+        ``"srgb"`` or ``"gamma2.2"``. None (the default) is ``"linear"``, or pyrender's
+        ``"gamma2.2"`` for a pyrender scene. ``"linear"`` returns the lighting equation's
+        values as they are, GL's output without
         ``GL_FRAMEBUFFER_SRGB``; ``"srgb"`` applies `srgb_encode` (IEC 61966-2-1), the
         brightness pyrender's, three.js's and Blender's sRGB output shows; ``"gamma2.2"``
         applies ``x^(1/2.2)``. Names are case-insensitive. The background is encoded too.
@@ -246,7 +260,18 @@ def render(
     w = integer(width, "width", 1, _glshade.MAX_SIZE)
     h = integer(height, "height", 1, _glshade.MAX_SIZE)
     mode = one_of(shading, "shading", ("flat", "gouraud", "phong"))
-    encoding = transfer_name(transfer)
+    if is_pyrender_scene(vertices):
+        if faces is not None or scene is not None or camera is not None:
+            raise TypeError(
+                "render(pyrender_scene, width=, height=) takes the scene's own meshes, lights "
+                "and camera: no faces, scene or camera after it"
+            )
+        return render_pyrender(
+            vertices, width=w, height=h,
+            transfer=transfer_name("gamma2.2" if transfer is None else transfer),
+            clamp=flag(clamp, "clamp"), depth=flag(depth, "depth"), render=render,
+        )  # fmt: skip
+    encoding = transfer_name("linear" if transfer is None else transfer)
     given = render_input(
         vertices,
         faces,
@@ -262,6 +287,20 @@ def render(
         height=h,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
+    if isinstance(given.scene, GltfScene):
+        gl_only = {
+            "color_material": color_material is None,
+            "rescale_normal": rescale_normal is False,
+            "normalize": normalize is True,
+            "color_material_face": color_material_face == "front_and_back",
+        }
+        for name, default in gl_only.items():
+            if not default:
+                raise TypeError(
+                    f"{name} applies to the GL model (glshade.Scene), not to a "
+                    f"glshade.gltf.Scene (normals are always normalised and vertex colours "
+                    f"multiply the result)"
+                )
     clear = rgba(background, "background")
     warn_if_bytes(color(background, "background"), "background", "render")
     image, z = _glshade.render(

@@ -17,6 +17,7 @@ from ._normals import vertex_normals
 from ._scene import Scene
 from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors
 from ._typing import FloatArray
+from .gltf import Scene as GltfScene
 
 
 @dataclass
@@ -29,7 +30,7 @@ class RenderInput:
     normals: FloatArray | None
     colors: FloatArray | None
     color_material: str | None
-    scene: Scene
+    scene: Scene | GltfScene
     camera: Camera
 
 
@@ -41,7 +42,7 @@ def is_pair(obj: Any) -> bool:
         and len(obj) == 2
         and np.ndim(obj[0]) == 2
         and np.ndim(obj[1]) == 2
-        and not isinstance(obj[0], (Scene, Camera))
+        and not isinstance(obj[0], (Scene, GltfScene, Camera))
     )
 
 
@@ -50,14 +51,14 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     camera)``, ``(mesh, scene, camera)``, ``(mesh, camera)``, ``(vertices, faces, camera)``,
     a mesh being an object with ``.vertices`` and ``.faces`` or a ``(vertices, faces)`` tuple;
     scene and camera None where not given. A TypeError names what does not fit."""
-    if is_pair(vertices) and (faces is None or isinstance(faces, (Scene, Camera))):
+    if is_pair(vertices) and (faces is None or isinstance(faces, (Scene, GltfScene, Camera))):
         if camera is not None:
             raise TypeError(
                 "render((vertices, faces), scene, camera) takes a scene and a camera after the "
                 f"mesh, got a {type(camera).__name__} as well"
             )
         (vertices, faces), scene, camera = vertices, faces, scene
-    if isinstance(faces, (Scene, Camera)):
+    if isinstance(faces, (Scene, GltfScene, Camera)):
         if not is_mesh(vertices):
             raise TypeError(
                 "faces is required unless the first argument is a mesh with .vertices and "
@@ -73,9 +74,10 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     if isinstance(scene, Camera) and camera is None:
         scene, camera = None, scene  # render(mesh, camera): the default scene
     order = "the call is render(vertices, faces, scene, camera) or render(mesh, scene, camera)"
-    if scene is not None and not isinstance(scene, Scene):
+    if scene is not None and not isinstance(scene, (Scene, GltfScene)):
         raise TypeError(
-            f"scene must be a glshade.Scene, or None for the default key light, got "
+            f"scene must be a glshade.Scene or glshade.gltf.Scene, or None for the default key "
+            f"light, got "
             f"{type(scene)!r}; {order}"
         )
     if camera is not None and not isinstance(camera, Camera):
@@ -138,6 +140,9 @@ def render_input(
                 n = n[f].reshape(-1, 3)
             v, c = v[f].reshape(-1, 3), np.repeat(c, 3, axis=0)
             f = np.arange(3 * len(f), dtype=np.int64).reshape(-1, 3)
+    if isinstance(scene, GltfScene):
+        # World coordinates always; the native render puts the camera at the view's eye.
+        return RenderInput(v, f, n, c, None, scene, camera)
     if scene is None:
         # The default lights belong to the world: an orbiting camera sees them stay put.
         eye_scene = default_scene().in_eye_space(camera.view)

@@ -7,9 +7,10 @@ import functools
 from collections.abc import Callable
 from typing import ParamSpec, TypeVar, cast
 
+import numpy as np
 from numpy.typing import ArrayLike
 
-from . import _glshade
+from . import _glshade, gltf
 from ._intake import accuracy_choice, choice, flag, matrix, optional_choice, out_array, vertices
 from ._scene import Scene
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
@@ -43,7 +44,7 @@ def _names_missing_normals(function: Callable[_P, _R]) -> Callable[_P, _R]:
 def shade(
     positions: ArrayLike,
     normals: ArrayLike,
-    scene: Scene,
+    scene: Scene | gltf.Scene,
     *,
     modelview: ArrayLike | None = None,
     normalize: bool = False,
@@ -67,8 +68,12 @@ def shade(
         for every position, say), and their common leading shape is the result's. Used as
         given, as in GL: a non-unit normal scales the diffuse and specular terms unless
         `normalize` is set.
-    scene : Scene
-        Lights (in eye coordinates), materials and light model.
+    scene : Scene or gltf.Scene
+        Lights (in eye coordinates), materials and light model. A `glshade.gltf.Scene` lights
+        the vertices with glTF's metallic-roughness model as pyrender does instead (world
+        coordinates, normals always normalised, `colors` multiplying the result); the options
+        of the GL model (`modelview`, `normalize`, `rescale_normal`, `color_material`,
+        `color_material_face`, `strict`) then do not apply and raise `TypeError` if set.
     modelview : (4, 4) float, optional
         An affine modelview matrix M (row-major, as numpy prints it): positions become
         ``M @ (p, 1)``, normals ``inv(M[:3, :3]).T @ n`` (GL's normal matrix).
@@ -143,8 +148,8 @@ def shade(
     >>> gs.shade(np.zeros((480, 640, 3), np.float32), (0, 0, 1), scene).shape  # one normal for all
     (480, 640, 4)
     """
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a glshade.Scene, got {type(scene)!r}")
+    if not isinstance(scene, (Scene, gltf.Scene)):
+        raise TypeError(f"scene must be a glshade.Scene or glshade.gltf.Scene, got {type(scene)!r}")
     # Before the dask branch, so a lazy call warns once, here, and its tasks get "fast".
     mode = accuracy_choice(accuracy)
     if any(_is_dask(x) for x in (positions, normals, colors)):
@@ -162,6 +167,14 @@ def shade(
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
+    if isinstance(scene, gltf.Scene):
+        gl_options = {
+            "modelview": (modelview, None), "normalize": (normalize, False),
+            "rescale_normal": (rescale_normal, False), "color_material": (color_material, None),
+            "color_material_face": (color_material_face, "front_and_back"),
+            "strict": (strict, False),
+        }  # fmt: skip
+        return _shade_gltf(positions, normals, scene, colors, mode, clamp, out, gl_options)
     p, n, c = vertices(positions, normals, colors)
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
@@ -183,6 +196,47 @@ def shade(
         out=out,
     )
     return result
+
+
+def _shade_gltf(
+    positions: ArrayLike,
+    normals: ArrayLike,
+    scene: gltf.Scene,
+    colors: ArrayLike | None,
+    accuracy: str,
+    clamp: bool,
+    out: FloatArray | None,
+    gl_options: dict[str, tuple[object, object]],
+) -> FloatArray:
+    """`shade` with the metallic-roughness model; the GL model's options must be left at their
+    defaults. "exact" computes float32 arrays in float64 and rounds the result once."""
+    for name, (value, default) in gl_options.items():
+        same = value is default or (isinstance(value, (bool, str)) and value == default)
+        if not same:
+            raise TypeError(
+                f"{name} applies to the GL model (glshade.Scene), not to a glshade.gltf.Scene "
+                f"(normals are always normalised, positions are in world coordinates), got "
+                f"{name}={value!r}"
+            )
+    if accuracy not in ("fast", "exact"):
+        raise ValueError(f"accuracy must be 'fast' or 'exact', got {accuracy!r}")
+    p, n, c = vertices(positions, normals, colors)
+    if out is not None:
+        out = out_array(out, {"positions": p, "normals": n, "colors": c})
+    unclamped = not flag(clamp, "clamp")
+    if accuracy == "exact" and p.dtype == np.float32:
+        wide = None if c is None else c.astype(np.float64)
+        result = _glshade.shade_gltf(
+            p.astype(np.float64), n.astype(np.float64), scene._native, colors=wide, model=None,
+            clamp=not unclamped, out=None,
+        )  # fmt: skip
+        if out is None:
+            return cast(FloatArray, result.astype(np.float32))
+        out[...] = result
+        return out
+    return _glshade.shade_gltf(
+        p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
+    )
 
 
 def _is_dask(x: object) -> bool:

@@ -13,6 +13,7 @@ from ._intake import matrix, one_of
 from ._normals import face_normals, vertex_normals
 from ._render_input import is_pair
 from ._scene import Scene
+from .gltf import Scene as GltfScene
 from ._shade import shade
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Per, Weighting
@@ -24,7 +25,7 @@ def shade_mesh(
     vertices: Any,
     faces: ArrayLike | None = None,
     *,
-    scene: Scene | None = None,
+    scene: Scene | GltfScene | None = None,
     per: Per = "vertex",
     weighting: Weighting = "angle",
     **shade_kwargs: Any,
@@ -38,7 +39,7 @@ def shade_mesh(
         ``.faces`` (a ``trimesh.Trimesh``) or a ``(vertices, faces)`` tuple.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle, counter-clockwise seen from the front.
-    scene : Scene, optional
+    scene : Scene or gltf.Scene, optional
         What lights the mesh, in the coordinates it is shaded in (the mesh's own, or eye
         coordinates with a ``modelview``). None (the default): the default scene of `render`
         placed for this mesh: its key light and fill (directional, from the upper left and
@@ -84,9 +85,10 @@ def shade_mesh(
             "argument, gs.shade_mesh(mesh, scene=scene) or gs.shade_mesh(vertices, faces, "
             "scene=scene)"
         )
-    if scene is not None and not isinstance(scene, Scene):
+    if scene is not None and not isinstance(scene, (Scene, GltfScene)):
         raise TypeError(
-            f"scene must be a glshade.Scene, or None for the default lights, got {type(scene)!r}"
+            f"scene must be a glshade.Scene or glshade.gltf.Scene, or None for the default "
+            f"lights, got {type(scene)!r}"
         )
     where = one_of(per, "per", ("vertex", "face"))
     weights = cast(Weighting, one_of(weighting, "weighting", ("angle", "area", "uniform")))

@@ -8,6 +8,7 @@ use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use super::arrays::{float_of, read, rows, vertex_colors, zeros, Float};
+use super::gltf::GltfScene;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
 use super::{faces, matrix};
@@ -17,11 +18,20 @@ use crate::numbers::real::Real;
 use crate::render::camera::Camera;
 use crate::render::mesh::Mesh;
 use crate::render::raster::{Cull, Viewport};
-use crate::render::{RenderOptions, Shading};
+use crate::render::{render_metallic_roughness, RenderOptions, Shading};
+
+/// The scene of a render: GL's or glTF's metallic-roughness one.
+#[derive(FromPyObject)]
+pub enum AnyScene<'py> {
+    /// `glshade.Scene`'s native scene.
+    Gl(Bound<'py, Scene>),
+    /// `glshade.gltf.Scene`'s native scene.
+    Gltf(Bound<'py, GltfScene>),
+}
 
 fn render_typed<'py, T: Element + Real>(
     py: Python<'py>,
-    scene: &Scene,
+    scene: &AnyScene<'py>,
     camera: &Camera,
     options: &RenderOptions,
     vertices: &Bound<'py, PyUntypedArray>,
@@ -49,10 +59,20 @@ fn render_typed<'py, T: Element + Real>(
     {
         let (mut image, mut depth) = (image.readwrite(), depth.readwrite());
         let (image, depth) = (image.as_slice_mut()?, depth.as_slice_mut()?);
-        let scene = &scene.state;
-        run(py, true, |stop| {
-            crate::render::render(scene, &mesh, camera, options, image, depth, stop)
-        })?;
+        match scene {
+            AnyScene::Gl(scene) => {
+                let scene = &scene.get().state;
+                run(py, true, |stop| {
+                    crate::render::render(scene, &mesh, camera, options, image, depth, stop)
+                })?;
+            }
+            AnyScene::Gltf(scene) => {
+                let scene = &scene.get().state;
+                run(py, true, |stop| {
+                    render_metallic_roughness(scene, &mesh, camera, options, image, depth, stop)
+                })?;
+            }
+        }
     }
     Ok((image.into_any(), depth.into_any()))
 }
@@ -69,7 +89,7 @@ pub fn render<'py>(
     py: Python<'py>,
     vertices: &Bound<'py, PyUntypedArray>,
     faces: &Bound<'py, PyUntypedArray>,
-    scene: &Bound<'py, Scene>,
+    scene: AnyScene<'py>,
     view: PyReadonlyArray2<'py, f64>,
     projection: PyReadonlyArray2<'py, f64>,
     model: PyReadonlyArray2<'py, f64>,
@@ -114,7 +134,7 @@ pub fn render<'py>(
             ColorClamp::Off
         },
     };
-    let scene = scene.get();
+    let scene = &scene;
     match float_of(vertices, "vertices")? {
         Float::F32 => render_typed::<f32>(
             py, scene, &camera, &options, vertices, faces, normals, colors,

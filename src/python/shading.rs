@@ -4,17 +4,79 @@ use numpy::{Element, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
+use std::mem::MaybeUninit;
+
 use super::arrays::{filled, float_of, read, rows, vertex_colors, write, Float};
 use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
+use crate::errors::error::Error;
+use crate::errors::stop::Stop;
 use crate::gl::material::ColorMaterial;
+use crate::gl::vertex_colors::VertexColors;
 use crate::lighting::prepare::{Accuracy, ColorClamp, ShadeOptions};
+use crate::lighting::shade::as_uninit;
 use crate::numbers::real::Real;
 
 /// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
 /// of work: below it, the helper thread that watches for signals would cost more than it saves).
 const LONG_CALL: usize = 1 << 17;
+
+/// Computes one call's colours with `compute` (its arrays, the memory to fill, the stop) into
+/// `out` or a new array of shape ([planes,] ..., 4); `lights` sizes the work for Ctrl-C.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn shade_arrays<'py, T: Element + Real>(
+    py: Python<'py>,
+    positions: &Bound<'py, PyUntypedArray>,
+    normals: &Bound<'py, PyUntypedArray>,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    out: Option<&Bound<'py, PyUntypedArray>>,
+    planes: usize,
+    lights: usize,
+    compute: impl Fn(
+            &[[T; 3]],
+            &[[T; 3]],
+            Option<VertexColors<'_, T>>,
+            &mut [MaybeUninit<T>],
+            &Stop,
+        ) -> Result<(), Error>
+        + Sync,
+) -> PyResult<Bound<'py, PyAny>> {
+    let positions = read::<T>(positions, "positions")?;
+    let normals = read::<T>(normals, "normals")?;
+    let colors = colors.map(|c| read::<T>(c, "colors")).transpose()?;
+    let (p, n) = (
+        rows::<T, 3>(&positions, "positions")?,
+        rows::<T, 3>(&normals, "normals")?,
+    );
+    let vertex_colors = colors.as_ref().map(vertex_colors).transpose()?;
+    let leading = &normals.shape()[..normals.ndim() - 1];
+    let mut shape: Vec<usize> = Vec::with_capacity(leading.len() + 2);
+    if planes > 1 {
+        shape.push(planes);
+    }
+    shape.extend_from_slice(leading);
+    shape.push(4);
+    let long = n.len().saturating_mul(lights + 1) > LONG_CALL;
+    if let Some(out) = out {
+        let colors: &[T] = vertex_colors.as_ref().map_or(&[], |c| c.data);
+        let inputs = [
+            ("positions", p.as_flattened()),
+            ("normals", n.as_flattened()),
+            ("colors", colors),
+        ];
+        let mut rw = write::<T>(out, &shape, &inputs)?;
+        let dst = rw.as_slice_mut()?;
+        run(py, long, |stop| {
+            compute(p, n, vertex_colors, as_uninit(dst), stop)
+        })?;
+        return Ok(out.clone().into_any());
+    }
+    let array = filled::<T>(py, &shape, |dst| {
+        run(py, long, |stop| compute(p, n, vertex_colors, dst, stop))
+    })?;
+    Ok(array.into_any())
+}
 
 fn shade_typed<'py, T: Element + Real>(
     py: Python<'py>,
@@ -26,43 +88,19 @@ fn shade_typed<'py, T: Element + Real>(
     out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let scene = &scene.state;
-    let positions = read::<T>(positions, "positions")?;
-    let normals = read::<T>(normals, "normals")?;
-    let colors = colors.map(|c| read::<T>(c, "colors")).transpose()?;
-    let (p, n) = (
-        rows::<T, 3>(&positions, "positions")?,
-        rows::<T, 3>(&normals, "normals")?,
-    );
-    let vertex_colors = colors.as_ref().map(vertex_colors).transpose()?;
-    let planes = scene.output_count();
-    let leading = &normals.shape()[..normals.ndim() - 1];
-    let mut shape: Vec<usize> = Vec::with_capacity(leading.len() + 2);
-    if planes > 1 {
-        shape.push(planes);
-    }
-    shape.extend_from_slice(leading);
-    shape.push(4);
-    let long = n.len().saturating_mul(scene.lights.len() + 1) > LONG_CALL;
-    if let Some(out) = out {
-        let colors: &[T] = vertex_colors.as_ref().map_or(&[], |c| c.data);
-        let inputs = [
-            ("positions", p.as_flattened()),
-            ("normals", n.as_flattened()),
-            ("colors", colors),
-        ];
-        let mut rw = write::<T>(out, &shape, &inputs)?;
-        let dst = rw.as_slice_mut()?;
-        run(py, long, |stop| {
-            crate::lighting::shade::shade(scene, p, n, vertex_colors, options, dst, stop)
-        })?;
-        return Ok(out.clone().into_any());
-    }
-    let array = filled::<T>(py, &shape, |dst| {
-        run(py, long, |stop| {
-            crate::lighting::shade::shade_uninit(scene, p, n, vertex_colors, options, dst, stop)
-        })
-    })?;
-    Ok(array.into_any())
+    let (planes, lights) = (scene.output_count(), scene.lights.len());
+    shade_arrays::<T>(
+        py,
+        positions,
+        normals,
+        colors,
+        out,
+        planes,
+        lights,
+        |p, n, c, dst, stop| {
+            crate::lighting::shade::shade_uninit(scene, p, n, c, options, dst, stop)
+        },
+    )
 }
 
 /// The options of a `shade` call from the binding's arguments.

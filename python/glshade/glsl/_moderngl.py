@@ -520,6 +520,12 @@ def render(
         width=w,
         height=h,
     )
+    if not isinstance(given.scene, Scene):
+        raise TypeError(
+            "glsl.render draws GL's lighting equation; a glshade.gltf.Scene (the metallic-"
+            "roughness model) has no GLSL counterpart here yet: use glshade.render"
+        )
+    scene = given.scene
     warn_if_bytes(color(background, "background"), "background", "render")
     v = given.vertices.astype(np.float64)
     f = given.faces
@@ -547,7 +553,7 @@ def render(
         given.camera.projection_matrix(w, h),
         w,
         h,
-        given.scene,
+        scene,
         shading=cast(Shading, mode),
         normalize=normalize,
         colors=colors_given,
