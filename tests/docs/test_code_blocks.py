@@ -24,7 +24,7 @@ def marks(path: Path) -> list[pytest.MarkDecorator]:
     """What a file's blocks need, as the suite's markers (pyproject.toml)."""
     text = "\n".join(python_blocks(path))
     needs = []
-    if "glsl.render(" in text or "glsl.shade(" in text or "moderngl" in text:
+    if "glsl.render(" in text or "glsl.shade(" in text or "moderngl" in text or "pyrender" in text:
         needs.append(pytest.mark.gl)
     if "LocalCluster" in text:
         needs.append(pytest.mark.cluster)

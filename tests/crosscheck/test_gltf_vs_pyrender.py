@@ -1,0 +1,176 @@
+"""`render` of a pyrender scene against stock pyrender (its own glTF metallic-roughness shader,
+Mesa llvmpipe through EGL), on the interior pixels of `support.pyrender_rays`: where a pixel's
+centre and its four MSAA samples all hit one face, pyrender's resolved colour is its
+fragment's at the centre, so the two images must agree there within pyrender's 8-bit rounding
+(0.5/255) and float32's rounding through the final gamma.
+
+Scenes: a metallic/roughness sweep from 0 to 1, vertex colours (trimesh's, through pyrender's
+own ``Mesh.from_trimesh``), emission, each light kind alone, three lights with an ambient light;
+every material double-sided, so the inside of the cut meshes is drawn (and lit through |n·v|).
+A light 2% too bright must fail the comparison.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+import pytest
+from conftest import require
+
+import glshade as gs
+from support import glpeers  # first: it sets PYOPENGL_PLATFORM=egl before OpenGL is imported
+from support.pyrender_rays import HEIGHT, ROUNDING, WIDTH, YFOV, ZFAR, ZNEAR, interior, mesh
+
+pytestmark = pytest.mark.gl
+
+trimesh = require("trimesh")
+pyrender = require("pyrender")
+
+# float32 arithmetic in llvmpipe and its pow(c, 1/2.2), on the 8-bit scale's units.
+FLOAT32 = 2e-5
+SEEDS = (0, 1, 2)
+
+
+@pytest.fixture(scope="module")
+def renderer() -> Any:
+    r = glpeers.gl_resource(
+        "pyrender OffscreenRenderer (EGL)", lambda: pyrender.OffscreenRenderer(WIDTH, HEIGHT)
+    )
+    yield r
+    r.delete()
+
+
+def pose(position: tuple[float, float, float], target: tuple[float, float, float]) -> np.ndarray:
+    """A node pose at `position` whose -z axis points at `target` (a light's direction)."""
+    forward = np.subtract(target, position)
+    forward = forward / np.linalg.norm(forward)
+    up = (0.0, 1.0, 0.0) if abs(forward[1]) < 0.9 else (1.0, 0.0, 0.0)
+    right = np.cross(forward, up)
+    right /= np.linalg.norm(right)
+    result = np.eye(4)
+    result[:3, 0], result[:3, 1], result[:3, 2] = right, np.cross(right, forward), -forward
+    result[:3, 3] = position
+    return result
+
+
+CENTRE = (0.0, 0.0, -3.5)
+
+
+def light(kind: str, intensity_scale: float = 1.0) -> tuple[Any, np.ndarray]:
+    """One light of `kind`, lighting the mesh around CENTRE from the upper left."""
+    if kind == "directional":
+        return pyrender.DirectionalLight(
+            color=(1.0, 0.95, 0.9), intensity=3.0 * intensity_scale
+        ), pose((0, 0, 0), (-1.0, -1.5, -3.0))
+    if kind == "point":
+        return pyrender.PointLight(color=(0.6, 0.8, 1.0), intensity=12.0 * intensity_scale), pose(
+            (1.5, 1.2, -1.0), CENTRE
+        )
+    return pyrender.SpotLight(
+        color=(1.0, 0.7, 0.5), intensity=25.0 * intensity_scale, innerConeAngle=0.15,
+        outerConeAngle=0.45,
+    ), pose((-1.0, 0.8, -0.5), (0.2, -0.2, -3.5))  # fmt: skip
+
+
+def material(**factors: Any) -> Any:
+    return pyrender.MetallicRoughnessMaterial(alphaMode="OPAQUE", doubleSided=True, **factors)
+
+
+def scene_of(
+    seed: int,
+    lights: list[str],
+    mat: Any = None,
+    *,
+    colored: bool = False,
+    ambient: tuple[float, float, float] = (0.0, 0.0, 0.0),
+    intensity_scale: float = 1.0,
+) -> Any:
+    """mesh(seed) seen from the identity pose (the rays' camera), with `lights`."""
+    scene = pyrender.Scene(bg_color=(0, 0, 0, 0), ambient_light=ambient)
+    m = mesh(seed)
+    if colored:
+        rng = np.random.default_rng(seed)
+        colors = rng.integers(40, 256, (len(m.vertices), 4), dtype=np.uint8)
+        colors[:, 3] = 255
+        m = trimesh.Trimesh(
+            m.vertices, m.faces, vertex_normals=m.vertex_normals, vertex_colors=colors,
+            process=False,
+        )  # fmt: skip
+        node = pyrender.Mesh.from_trimesh(m, smooth=True)
+        node.primitives[0].material.doubleSided = True
+    else:
+        node = pyrender.Mesh.from_trimesh(m, material=mat, smooth=True)
+    scene.add(node)
+    scene.add(pyrender.PerspectiveCamera(yfov=YFOV, znear=ZNEAR, zfar=ZFAR), pose=np.eye(4))
+    for kind in lights:
+        made, where = light(kind, intensity_scale)
+        scene.add(made, pose=where)
+    return scene
+
+
+def worst(renderer: Any, scene: Any, seed: int, ours_scene: Any = None) -> tuple[float, int]:
+    """The largest difference on the interior pixels, in 1/255, and how many were compared."""
+    theirs = np.asarray(renderer.render(scene)[0], dtype=np.float64) / 255
+    ours = gs.render(scene if ours_scene is None else ours_scene, width=WIDTH, height=HEIGHT)
+    _, inside = interior(seed)
+    lit = theirs[inside].max(axis=1) > 0.1
+    assert lit.sum() > 300, f"only {lit.sum()} interior pixels are lit"
+    difference = np.abs(ours[..., :3] - theirs)[inside]
+    return float(difference.max() * 255), int(inside.sum())
+
+
+SWEEP = [(0.0, 0.0), (0.0, 1.0), (1.0, 0.0), (1.0, 1.0), (0.5, 0.5), (0.2, 0.8)]
+
+
+@pytest.mark.parametrize(("metallic", "roughness"), SWEEP)
+def test_metallic_roughness_sweep(renderer: Any, metallic: float, roughness: float) -> None:
+    seed = SWEEP.index((metallic, roughness)) % 3
+    mat = material(
+        baseColorFactor=(0.85, 0.45, 0.25, 1.0), metallicFactor=metallic, roughnessFactor=roughness
+    )
+    scene = scene_of(seed, ["directional", "point", "spot"], mat, ambient=(0.03, 0.03, 0.03))
+    error, compared = worst(renderer, scene, seed)
+    assert compared > 2000
+    assert error <= (ROUNDING + FLOAT32) * 255, error
+
+
+@pytest.mark.parametrize("kind", ["directional", "point", "spot"])
+def test_each_light_kind(renderer: Any, kind: str) -> None:
+    seed = ["directional", "point", "spot"].index(kind)
+    mat = material(baseColorFactor=(0.7, 0.7, 0.75, 1.0), metallicFactor=0.1, roughnessFactor=0.4)
+    error, _ = worst(renderer, scene_of(seed, [kind], mat), seed)
+    assert error <= (ROUNDING + FLOAT32) * 255, error
+
+
+def test_vertex_colors(renderer: Any) -> None:
+    error, _ = worst(renderer, scene_of(1, ["directional", "spot"], colored=True), 1)
+    assert error <= (ROUNDING + FLOAT32) * 255, error
+
+
+def test_emission(renderer: Any) -> None:
+    mat = material(
+        baseColorFactor=(0.3, 0.5, 0.3, 1.0), metallicFactor=0.0, roughnessFactor=0.6,
+        emissiveFactor=(0.4, 0.1, 0.25),
+    )  # fmt: skip
+    error, _ = worst(renderer, scene_of(2, ["point"], mat), 2)
+    assert error <= (ROUNDING + FLOAT32) * 255, error
+
+
+def test_three_lights_and_ambient(renderer: Any) -> None:
+    mat = material(baseColorFactor=(0.9, 0.8, 0.6, 1.0), metallicFactor=0.6, roughnessFactor=0.3)
+    scene = scene_of(0, ["directional", "point", "spot"], mat, ambient=(0.08, 0.1, 0.12))
+    error, _ = worst(renderer, scene, 0)
+    assert error <= (ROUNDING + FLOAT32) * 255, error
+
+
+def test_a_light_two_percent_off_fails(renderer: Any) -> None:
+    """The same comparison sees a 2% error in one light's intensity."""
+    mat = material(baseColorFactor=(0.9, 0.8, 0.6, 1.0), metallicFactor=0.6, roughnessFactor=0.3)
+    scene = scene_of(0, ["directional", "point", "spot"], mat, ambient=(0.08, 0.1, 0.12))
+    off = scene_of(0, ["directional", "point", "spot"], mat, ambient=(0.08, 0.1, 0.12))
+    for node in off.light_nodes:
+        if isinstance(node.light, pyrender.PointLight):
+            node.light.intensity *= 1.02
+    error, _ = worst(renderer, scene, 0, ours_scene=off)
+    assert error > (ROUNDING + FLOAT32) * 255, error
