@@ -17,6 +17,7 @@ MODULES = {
     "glshade": "glshade.md",
     "glshade.presets": "presets.md",
     "glshade.glsl": "glsl.md",
+    "glshade.gltf": "gltf.md",
     "glshade.dask": "dask.md",
     "glshade.lab.report": "lab.md",
     "glshade.lab.studies": "lab.md",
@@ -24,7 +25,7 @@ MODULES = {
     "glshade.lab.machine": "lab.md",
 }
 # Names the reference gives a page or a sentence of their own rather than an entry.
-ELSEWHERE = {"glsl", "meshes", "presets", "__version__", "report", "Report"}
+ELSEWHERE = {"glsl", "gltf", "meshes", "presets", "__version__", "report", "Report"}
 
 
 def documented(page: str, module: str) -> set[str]:
