@@ -14,6 +14,7 @@ pub mod mesh;
 pub mod passes;
 pub mod raster;
 pub mod shader;
+pub mod texture;
 pub mod visibility;
 
 use glam::{DMat4, DVec4};
@@ -25,7 +26,7 @@ use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::{Scene as GltfSceneData, ValidScene as GltfScene};
-use crate::lighting::metallic_roughness::shade::Options;
+use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
 use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
@@ -163,6 +164,16 @@ fn validate<T: Real>(
             )));
         }
     }
+    if let Some(textured) = mesh.textured {
+        textured.texture.validate()?;
+        if textured.uv.len() != mesh.vertices.len() {
+            return Err(Error::value(format!(
+                "uv must have one row per vertex ({}), got {}",
+                mesh.vertices.len(),
+                textured.uv.len()
+            )));
+        }
+    }
     if let Some(c) = mesh.colors {
         if c.data.len() != mesh.vertices.len() * c.width {
             return Err(Error::value(format!(
@@ -279,6 +290,12 @@ pub fn render_metallic_roughness<T: Real>(
     stop: &Stop,
 ) -> Result<(), Error> {
     validate(mesh, camera, options, image.len(), depth.len())?;
+    if mesh.textured.is_some() && mesh.colors.is_some() {
+        return Err(Error::value(
+            "the metallic-roughness model takes vertex colours or a base colour texture, not \
+             both",
+        ));
+    }
     let eye = camera.view.inverse().w_axis.truncate().to_array();
     let placed = GltfSceneData {
         camera_position: eye,
@@ -289,6 +306,11 @@ pub fn render_metallic_roughness<T: Real>(
         options: Options {
             model: Some(options.model),
             clamp: options.clamp,
+            colors: if mesh.textured.is_some() {
+                ColorRole::BaseColor
+            } else {
+                ColorRole::Multiply
+            },
         },
     };
     draw(shader, mesh, camera, options, image, depth, stop)
@@ -392,6 +414,7 @@ mod tests {
             faces: &QUAD_FACES,
             normals: None,
             colors: None,
+            textured: None,
         }
     }
 
@@ -509,6 +532,7 @@ mod tests {
             faces: &faces,
             normals: None,
             colors: None,
+            textured: None,
         };
         let options = RenderOptions {
             viewport: Viewport {
@@ -550,6 +574,7 @@ mod tests {
             faces: &faces,
             normals: None,
             colors: None,
+            textured: None,
         };
         let options = RenderOptions {
             viewport: Viewport {

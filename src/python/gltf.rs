@@ -96,6 +96,7 @@ fn options(model: Option<&PyReadonlyArray2<'_, f64>>, clamp: bool) -> PyResult<O
         } else {
             ColorClamp::Off
         },
+        ..Options::default()
     })
 }
 

@@ -1,7 +1,7 @@
 //! The binding of `render`.
 
 use numpy::{
-    Element, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyUntypedArray,
+    Element, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
     PyUntypedArrayMethods,
 };
 use pyo3::exceptions::PyValueError;
@@ -16,8 +16,9 @@ use crate::gl::material::ColorMaterial;
 use crate::lighting::prepare::ColorClamp;
 use crate::numbers::real::Real;
 use crate::render::camera::Camera;
-use crate::render::mesh::Mesh;
+use crate::render::mesh::{Mesh, Textured};
 use crate::render::raster::{Cull, Viewport};
+use crate::render::texture::{Filter, Texture, Wrap};
 use crate::render::{render_metallic_roughness, RenderOptions, Shading};
 
 /// The scene of a render: GL's or glTF's metallic-roughness one.
@@ -29,6 +30,15 @@ pub enum AnyScene<'py> {
     Gltf(Bound<'py, GltfScene>),
 }
 
+/// A render's texture as the binding takes it: float32 RGBA texels (height, width, 4), the
+/// texture coordinates (n, 2) of the vertices' dtype, the filter and the wrap modes.
+pub struct TextureArgs<'py> {
+    texels: PyReadonlyArray3<'py, f32>,
+    uv: Bound<'py, PyUntypedArray>,
+    filter: Filter,
+    wrap: [Wrap; 2],
+}
+
 fn render_typed<'py, T: Element + Real>(
     py: Python<'py>,
     scene: &AnyScene<'py>,
@@ -38,11 +48,31 @@ fn render_typed<'py, T: Element + Real>(
     faces: &Bound<'py, PyUntypedArray>,
     normals: Option<&Bound<'py, PyUntypedArray>>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
+    texture: Option<&TextureArgs<'py>>,
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
     let vertices = read::<T>(vertices, "vertices")?;
     let normals = normals.map(|a| read::<T>(a, "normals")).transpose()?;
     let colors = colors.map(|a| read::<T>(a, "colors")).transpose()?;
+    let uv = texture.map(|t| read::<T>(&t.uv, "uv")).transpose()?;
     let faces = faces::copy(faces)?;
+    let textured = match (texture, &uv) {
+        (Some(t), Some(uv)) => {
+            let shape = t.texels.shape();
+            Some(Textured {
+                uv: rows::<T, 2>(uv, "uv")?,
+                texture: Texture {
+                    width: shape[1],
+                    height: shape[0],
+                    texels: t.texels.as_slice().map_err(|_| {
+                        PyValueError::new_err("texture must be C-contiguous and aligned")
+                    })?,
+                    filter: t.filter,
+                    wrap: t.wrap,
+                },
+            })
+        }
+        _ => None,
+    };
     let mesh = Mesh {
         vertices: rows::<T, 3>(&vertices, "vertices")?,
         faces: &faces,
@@ -51,6 +81,7 @@ fn render_typed<'py, T: Element + Real>(
             .map(|n| rows::<T, 3>(n, "normals"))
             .transpose()?,
         colors: colors.as_ref().map(vertex_colors).transpose()?,
+        textured,
     };
     let Viewport { width, height } = options.viewport;
     options.viewport.validate().map_err(to_pyerr)?;
@@ -83,7 +114,8 @@ fn render_typed<'py, T: Element + Real>(
 #[pyfunction]
 #[pyo3(signature = (
     vertices, faces, scene, *, view, projection, model, width, height, shading, normals, colors,
-    color_material, color_material_face, normalize, rescale_normal, cull, background, clamp
+    color_material, color_material_face, normalize, rescale_normal, cull, background, clamp,
+    texture, uv, texture_filter, texture_wrap
 ))]
 pub fn render<'py>(
     py: Python<'py>,
@@ -105,7 +137,28 @@ pub fn render<'py>(
     cull: &str,
     background: PyReadonlyArray1<'py, f64>,
     clamp: bool,
+    texture: Option<PyReadonlyArray3<'py, f32>>,
+    uv: Option<Bound<'py, PyUntypedArray>>,
+    texture_filter: &str,
+    texture_wrap: (String, String),
 ) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    let texture = match (texture, uv) {
+        (Some(texels), Some(uv)) => Some(TextureArgs {
+            texels,
+            uv,
+            filter: Filter::parse(texture_filter).map_err(to_pyerr)?,
+            wrap: [
+                Wrap::parse(&texture_wrap.0).map_err(to_pyerr)?,
+                Wrap::parse(&texture_wrap.1).map_err(to_pyerr)?,
+            ],
+        }),
+        (None, None) => None,
+        _ => {
+            return Err(PyValueError::new_err(
+                "texture and uv go together: give both or neither",
+            ))
+        }
+    };
     let camera = Camera {
         view: matrix(&view, "view")?,
         projection: matrix(&projection, "projection")?,
@@ -137,10 +190,26 @@ pub fn render<'py>(
     let scene = &scene;
     match float_of(vertices, "vertices")? {
         Float::F32 => render_typed::<f32>(
-            py, scene, &camera, &options, vertices, faces, normals, colors,
+            py,
+            scene,
+            &camera,
+            &options,
+            vertices,
+            faces,
+            normals,
+            colors,
+            texture.as_ref(),
         ),
         Float::F64 => render_typed::<f64>(
-            py, scene, &camera, &options, vertices, faces, normals, colors,
+            py,
+            scene,
+            &camera,
+            &options,
+            vertices,
+            faces,
+            normals,
+            colors,
+            texture.as_ref(),
         ),
     }
 }

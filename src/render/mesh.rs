@@ -1,6 +1,16 @@
 //! The triangle mesh a render draws, apart from the renderer so that its passes can read it.
 
 use crate::gl::vertex_colors::VertexColors;
+use crate::render::texture::Texture;
+
+/// A texture and the coordinates that map it onto a mesh.
+#[derive(Clone, Copy, Debug)]
+pub struct Textured<'a, T> {
+    /// Texture coordinates per vertex, (n, 2): (0, 0) the image's lower-left corner.
+    pub uv: &'a [[T; 2]],
+    /// The image and its sampling.
+    pub texture: Texture<'a>,
+}
 
 /// A triangle mesh in model coordinates.
 #[derive(Clone, Copy, Debug)]
@@ -14,4 +24,8 @@ pub struct Mesh<'a, T> {
     pub normals: Option<&'a [[T; 3]]>,
     /// Per-vertex colours for `GL_COLOR_MATERIAL`, (n, 3) or (n, 4).
     pub colors: Option<VertexColors<'a, T>>,
+    /// A texture: GL's model multiplies each fragment's primary colour by its texel
+    /// (`GL_MODULATE`); the metallic-roughness model multiplies its base colour by the
+    /// texel decoded from sRGB, where the model is evaluated (glTF's `baseColorTexture`).
+    pub textured: Option<Textured<'a, T>>,
 }

@@ -27,6 +27,7 @@ use crate::numbers::real::Real;
 use crate::render::mesh::Mesh;
 use crate::render::raster::{Triangle, Viewport};
 use crate::render::shader::Shader;
+use crate::render::texture::srgb_to_linear;
 use crate::render::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.
@@ -168,6 +169,55 @@ pub struct Pass<'a, T> {
 }
 
 impl<T: Real> Pass<'_, T> {
+    /// The texel that multiplies the fragment of `face` at `weights` (GL's model with a
+    /// texture; `None` otherwise).
+    #[inline]
+    fn modulation(&self, face: [i64; 3], weights: DVec3) -> Option<[f64; 4]> {
+        let textured = self.mesh.textured.filter(|_| self.shader.modulates())?;
+        Some(
+            textured
+                .texture
+                .sample(interpolate(textured.uv, face, weights)),
+        )
+    }
+
+    /// The colours the shader reads per vertex: the mesh's, or for the metallic-roughness
+    /// model with a texture its texels at the vertices, decoded from sRGB (its base colours).
+    ///
+    /// # Errors
+    /// A memory error for the texels, or [`Error::interrupted`].
+    fn vertex_colors(&self, stop: &Stop) -> Result<Option<Zeroed<T>>, Error> {
+        let Some(textured) = self.mesh.textured.filter(|_| !self.shader.modulates()) else {
+            return Ok(None);
+        };
+        let len = count(&[textured.uv.len(), 4], "the texels at the vertices")?;
+        let mut texels = Zeroed::<T>::new(len, "the texels at the vertices")?;
+        texels
+            .par_chunks_mut(4 * FACES_PER_TASK)
+            .zip(textured.uv.par_chunks(FACES_PER_TASK))
+            .for_each(|(dst, uv)| {
+                if stop.is_requested() {
+                    return;
+                }
+                for (d, uv) in dst.chunks_exact_mut(4).zip(uv) {
+                    let texel = srgb_to_linear(textured.texture.sample(uv.map(T::to_f64)));
+                    for (d, t) in d.iter_mut().zip(texel) {
+                        *d = T::from_f64(t);
+                    }
+                }
+            });
+        stop.check()?;
+        Ok(Some(texels))
+    }
+
+    /// The mesh's colours, or `texels` (from [`Pass::vertex_colors`]) in their place.
+    fn colors_or<'b>(&'b self, texels: Option<&'b Zeroed<T>>) -> Option<VertexColors<'b, T>> {
+        match texels {
+            Some(data) => Some(VertexColors { data, width: 4 }),
+            None => self.mesh.colors,
+        }
+    }
+
     /// Gouraud: the vertices are lit with `normals` (one per vertex), the colours interpolated.
     ///
     /// # Errors
@@ -178,10 +228,11 @@ impl<T: Real> Pass<'_, T> {
         let n = mesh.vertices.len();
         let len = count(&[self.shader.outputs(), n, 4], "the vertex colours")?;
         let mut colours = Zeroed::<T>::new(len, "the vertex colours")?;
+        let texels = self.vertex_colors(stop)?;
         self.shader.shade(
             mesh.vertices,
             normals,
-            mesh.colors,
+            self.colors_or(texels.as_ref()),
             as_uninit(&mut colours),
             stop,
         )?;
@@ -190,7 +241,8 @@ impl<T: Real> Pass<'_, T> {
             .paint(image, self.background, stop, |t, x, y, _| {
                 let face = mesh.faces[t.face as usize];
                 let weights = t.weights_at(x, y);
-                self.shader.fragment(t.front, clamp, |plane| {
+                let texel = self.modulation(face, weights);
+                self.shader.fragment(t.front, clamp, texel, |plane| {
                     // The weights' sum may exceed 1 by an ulp: clamp, so the image stays in [0, 1].
                     let c = interpolate(&rows[plane * n..(plane + 1) * n], face, weights);
                     if clamp {
@@ -225,7 +277,9 @@ impl<T: Real> Pass<'_, T> {
             mesh.faces.par_iter().map(|f| mesh.vertices[provoking(f)]),
             "the provoking positions",
         )?;
-        let colors: Option<Zeroed<T>> = match mesh.colors {
+        let texels = self.vertex_colors(stop)?;
+        let source = self.colors_or(texels.as_ref());
+        let colors: Option<Zeroed<T>> = match source {
             Some(c) => {
                 let len = count(&[m, c.width], "the provoking colours")?;
                 let mut data = Zeroed::<T>::new(len, "the provoking colours")?;
@@ -245,20 +299,18 @@ impl<T: Real> Pass<'_, T> {
             }
             None => None,
         };
-        let colors = mesh
-            .colors
-            .zip(colors.as_deref())
-            .map(|(c, data)| VertexColors {
-                data,
-                width: c.width,
-            });
+        let colors = source.zip(colors.as_deref()).map(|(c, data)| VertexColors {
+            data,
+            width: c.width,
+        });
         let len = count(&[self.shader.outputs(), m, 4], "the face colours")?;
         let mut colours = Zeroed::<T>::new(len, "the face colours")?;
         self.shader
             .shade(&positions, normals, colors, as_uninit(&mut colours), stop)?;
         self.frame
-            .paint(image, self.background, stop, |t, _, _, _| {
-                self.shader.fragment(t.front, clamp, |plane| {
+            .paint(image, self.background, stop, |t, x, y, _| {
+                let texel = self.modulation(mesh.faces[t.face as usize], t.weights_at(x, y));
+                self.shader.fragment(t.front, clamp, texel, |plane| {
                     shaded(&colours, m, plane, t.face as usize)
                 })
             })
@@ -273,7 +325,13 @@ impl<T: Real> Pass<'_, T> {
         let clamp = self.shader.clamp();
         let (mesh, frame) = (self.mesh, &self.frame);
         let total: usize = frame.counts.iter().sum();
-        let color_width = mesh.colors.map_or(0, |c| c.width);
+        // The metallic-roughness model reads a texture's texels where it is evaluated.
+        let base_texture = mesh.textured.filter(|_| !self.shader.modulates());
+        let color_width = if base_texture.is_some() {
+            4
+        } else {
+            mesh.colors.map_or(0, |c| c.width)
+        };
         let mut positions = Zeroed::<[T; 3]>::new(total, "the pixel positions")?;
         let mut pixel_normals = Zeroed::<[T; 3]>::new(total, "the pixel normals")?;
         let len = count(&[total, color_width], "the pixel colors")?;
@@ -296,7 +354,14 @@ impl<T: Real> Pass<'_, T> {
                     let weights = t.weights_at(x, y);
                     positions[k] = interpolate(mesh.vertices, face, weights).map(T::from_f64);
                     normals_out[k] = interpolate(normals, face, weights).map(T::from_f64);
-                    if let Some(c) = mesh.colors {
+                    if let Some(textured) = base_texture {
+                        let uv = interpolate(textured.uv, face, weights);
+                        let texel = srgb_to_linear(textured.texture.sample(uv));
+                        let out = &mut colors[k * 4..(k + 1) * 4];
+                        for (d, t) in out.iter_mut().zip(texel) {
+                            *d = T::from_f64(t);
+                        }
+                    } else if let Some(c) = mesh.colors {
                         let out = &mut colors[k * color_width..(k + 1) * color_width];
                         for (channel, value) in out.iter_mut().enumerate() {
                             let at = face.map(|i| c.data[index(i) * color_width + channel]);
@@ -306,9 +371,9 @@ impl<T: Real> Pass<'_, T> {
                 }
             });
         stop.check()?;
-        let colors = mesh.colors.map(|c| VertexColors {
+        let colors = (color_width > 0).then_some(VertexColors {
             data: &colors,
-            width: c.width,
+            width: color_width,
         });
         let len = count(&[self.shader.outputs(), total, 4], "the pixel colours")?;
         let mut colours = Zeroed::<T>::new(len, "the pixel colours")?;
@@ -320,9 +385,11 @@ impl<T: Real> Pass<'_, T> {
             stop,
         )?;
         self.frame
-            .paint(image, self.background, stop, |t, _, _, k| {
-                self.shader
-                    .fragment(t.front, clamp, |plane| shaded(&colours, total, plane, k))
+            .paint(image, self.background, stop, |t, x, y, k| {
+                let texel = self.modulation(mesh.faces[t.face as usize], t.weights_at(x, y));
+                self.shader.fragment(t.front, clamp, texel, |plane| {
+                    shaded(&colours, total, plane, k)
+                })
             })
     }
 }

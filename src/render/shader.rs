@@ -74,16 +74,24 @@ impl Shader<'_> {
         }
     }
 
+    /// Whether a texture multiplies the fragments (GL's `GL_MODULATE`), rather than the base
+    /// colour where the model is evaluated (the metallic-roughness model).
+    pub fn modulates(&self) -> bool {
+        matches!(self, Self::Gl { .. })
+    }
+
     /// A fragment's RGBA from its colours in output order (`colour(k)` is plane k): for GL the
-    /// side by the triangle's facing and the colour sum ([`fragment`]); else the one plane.
+    /// side by the triangle's facing, the primary times `texel` (`GL_MODULATE`) and the colour
+    /// sum ([`fragment`]); else the one plane.
     pub fn fragment(
         &self,
         front: bool,
         clamp: bool,
+        texel: Option<[f64; 4]>,
         colour: impl Fn(usize) -> [f64; 4],
     ) -> [f64; 4] {
         match self {
-            Self::Gl { scene, .. } => fragment(scene, front, clamp, colour),
+            Self::Gl { scene, .. } => fragment(scene, front, clamp, texel, colour),
             Self::MetallicRoughness { .. } => colour(0),
         }
     }
@@ -91,18 +99,23 @@ impl Shader<'_> {
 
 /// The RGBA of a GL fragment from its colours in the scene's output order (`colour(k)` is
 /// colour k, front before back, primary before secondary): the back ones for a back-facing
-/// triangle of a two-sided scene, the primary and secondary summed, and clamped unless `clamp`
-/// is off (high dynamic range).
+/// triangle of a two-sided scene, the primary times `texel` (GL's texture environment
+/// `GL_MODULATE`, which comes before the colour sum), the primary and secondary summed, and
+/// clamped unless `clamp` is off (high dynamic range).
 #[inline]
 fn fragment(
     scene: &crate::gl::scene::Scene,
     front: bool,
     clamp: bool,
+    texel: Option<[f64; 4]>,
     colour: impl Fn(usize) -> [f64; 4],
 ) -> [f64; 4] {
     let per_side = 1 + usize::from(scene.separate_specular);
     let base = per_side * usize::from(scene.two_side && !front);
     let mut c = colour(base);
+    if let Some(t) = texel {
+        c = std::array::from_fn(|k| c[k] * t[k]);
+    }
     if scene.separate_specular {
         let s = colour(base + 1);
         for k in 0..3 {
@@ -127,14 +140,23 @@ mod tests {
             [0.0, 0.0, 0.0, 1.0],
         ];
         let mut scene = Scene::default();
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[0]);
+        assert_eq!(
+            fragment(&scene, false, true, None, |k| colours[k]),
+            colours[0]
+        );
         scene.two_side = true;
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[1]);
+        assert_eq!(
+            fragment(&scene, false, true, None, |k| colours[k]),
+            colours[1]
+        );
         scene.separate_specular = true;
         assert_eq!(
-            fragment(&scene, true, true, |k| colours[k]),
+            fragment(&scene, true, true, None, |k| colours[k]),
             [1.0, 0.25, 0.5, 0.5]
         );
-        assert_eq!(fragment(&scene, false, true, |k| colours[k]), colours[2]);
+        assert_eq!(
+            fragment(&scene, false, true, None, |k| colours[k]),
+            colours[2]
+        );
     }
 }

@@ -339,6 +339,7 @@ fn draw<T: Real>(
         faces: &faces,
         normals: None,
         colors: None,
+        textured: None,
     };
     let options = crate::render::RenderOptions {
         viewport: crate::render::raster::Viewport { width, height },

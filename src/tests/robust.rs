@@ -132,6 +132,7 @@ fn draw(
             data: &colors,
             width: 3,
         }),
+        textured: None,
     };
     let options = render_options(shading);
     let Viewport { width, height } = options.viewport;

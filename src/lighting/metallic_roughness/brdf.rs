@@ -30,11 +30,22 @@ pub struct Surface<T: Real> {
     pub a2: T,
     /// k = (r + 1)²/8.
     pub k: T,
-    /// f0 = mix(0.04, base colour, metallic), RGB.
-    pub f0: [T; 3],
-    /// (1 − f0)·c_diff/π with c_diff = base colour·0.96·(1 − metallic), RGB: the diffuse
-    /// term is this times (1 − (1 − v·h)^5), since 1 − F = (1 − f0)(1 − (1 − v·h)^5).
-    pub diffuse: [T; 3],
+    /// The albedo of the material's base colour factor, the same at every vertex.
+    pub albedo: Albedo<T>,
+    /// 0.04·(1 − metallic) and metallic: f0 = this + base·metallic, per texel.
+    f0_of_base: [T; 2],
+    /// 0.96·(1 − metallic)/π: c_diff/π = base·this, per texel.
+    diffuse_of_base: T,
+}
+
+/// The colours of a surface point, RGB: f0 and the diffuse factor.
+#[derive(Clone, Copy, Debug)]
+pub struct Albedo<X> {
+    /// f0 = mix(0.04, base colour, metallic).
+    pub f0: [X; 3],
+    /// (1 − f0)·c_diff/π with c_diff = base colour·0.96·(1 − metallic): the diffuse term is
+    /// this times (1 − (1 − v·h)^5), since 1 − F = (1 − f0)(1 − (1 − v·h)^5).
+    pub diffuse: [X; 3],
 }
 
 impl<T: Real> Surface<T> {
@@ -50,14 +61,40 @@ impl<T: Real> Surface<T> {
         Self {
             a2: T::from_f64((r * r) * (r * r)),
             k: T::from_f64((r + 1.0) * (r + 1.0) / 8.0),
-            f0: f0.map(T::from_f64),
-            diffuse: diffuse.map(T::from_f64),
+            albedo: Albedo {
+                f0: f0.map(T::from_f64),
+                diffuse: diffuse.map(T::from_f64),
+            },
+            f0_of_base: [T::from_f64(MIN_ROUGHNESS * (1.0 - m)), T::from_f64(m)],
+            diffuse_of_base: T::from_f64((1.0 - MIN_ROUGHNESS) * (1.0 - m) / std::f64::consts::PI),
         }
     }
 
     /// Some channel has a diffuse term (c_diff ≠ 0).
     pub fn has_diffuse(&self) -> bool {
-        self.diffuse.iter().any(|&c| c != T::ZERO)
+        self.albedo.diffuse.iter().any(|&c| c != T::ZERO)
+    }
+
+    /// The material's albedo in every lane.
+    #[inline(always)]
+    pub fn splat<V: Lanes<T = T>>(&self) -> Albedo<V> {
+        Albedo {
+            f0: self.albedo.f0.map(V::splat),
+            diffuse: self.albedo.diffuse.map(V::splat),
+        }
+    }
+
+    /// The albedo of a base colour per lane (the factor times a texel, RGB).
+    #[inline(always)]
+    pub fn albedo_of<V: Lanes<T = T>>(&self, base: [V; 3]) -> Albedo<V> {
+        let [offset, metallic] = self.f0_of_base.map(V::splat);
+        let f0 = base.map(|c| c.mul_add(metallic, offset));
+        let one = V::splat(T::ONE);
+        let per = V::splat(self.diffuse_of_base);
+        Albedo {
+            f0,
+            diffuse: std::array::from_fn(|i| (one - f0[i]) * (base[i] * per)),
+        }
     }
 }
 
@@ -70,11 +107,12 @@ pub struct Cosines<V> {
     pub nv: V,
 }
 
-/// f (RGB) for unit (or zero) `n`, `v` and `l`; the diffuse part only when `diffuse` (a
-/// uniform branch: without it c_diff is 0).
+/// f (RGB) for unit (or zero) `n`, `v` and `l` at points of `albedo`; the diffuse part only
+/// when `diffuse` (a uniform branch: without it c_diff is 0).
 #[inline(always)]
 pub fn brdf<T: Real, V: Lanes<T = T>>(
     surface: &Surface<T>,
+    albedo: &Albedo<V>,
     n: V3<V>,
     v: V3<V>,
     l: V3<V>,
@@ -109,18 +147,18 @@ pub fn brdf<T: Real, V: Lanes<T = T>>(
     let d = a2 / (pi * den * den);
     let four_nl_nv = V::splat(T::from_f64(4.0)) * c.nl * c.nv;
     let specular = g * d / (four_nl_nv + V::splat(T::from_f64(LEAST_COSINE)));
-    let channel = |f0: V::T, diffuse_part: V::T| {
-        let fresnel = V::splat(T::ONE - f0).mul_add(q, V::splat(f0));
+    let channel = |f0: V, diffuse_part: V| {
+        let fresnel = (one - f0).mul_add(q, f0);
         let spec = fresnel * specular;
         if diffuse {
-            V::splat(diffuse_part).mul_add(one - q, spec)
+            diffuse_part.mul_add(one - q, spec)
         } else {
             spec
         }
     };
     V3 {
-        x: channel(surface.f0[0], surface.diffuse[0]),
-        y: channel(surface.f0[1], surface.diffuse[1]),
-        z: channel(surface.f0[2], surface.diffuse[2]),
+        x: channel(albedo.f0[0], albedo.diffuse[0]),
+        y: channel(albedo.f0[1], albedo.diffuse[1]),
+        z: channel(albedo.f0[2], albedo.diffuse[2]),
     }
 }

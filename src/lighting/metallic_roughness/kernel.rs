@@ -17,8 +17,9 @@ use crate::errors::error::Error;
 use crate::gltf::light::Punctual;
 use crate::gltf::scene::Scene;
 use crate::lighting::kernel::{emit, Block, SideColors};
-use crate::lighting::metallic_roughness::brdf::{brdf, Cosines, Surface, LEAST_COSINE};
+use crate::lighting::metallic_roughness::brdf::{brdf, Albedo, Cosines, Surface, LEAST_COSINE};
 use crate::lighting::metallic_roughness::plan::Plan;
+use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
 use crate::lighting::prepare::{cast_saturating, rgb, ColorClamp, Transform};
 use crate::lighting::shade::BlockShader;
 use crate::numbers::real::{normalize_or_zero, Real};
@@ -61,8 +62,13 @@ pub struct Kernel<T: Real> {
     surface: Surface<T>,
     /// base·ambient + emissive (RGB).
     constant: [T; 3],
-    /// The base colour's alpha.
-    alpha: T,
+    /// The base colour factor (RGBA), for per-vertex base colours.
+    base: [T; 4],
+    /// The ambient light and the emission, for per-vertex base colours.
+    ambient: [T; 3],
+    emissive: [T; 3],
+    /// What the per-vertex colours are.
+    role: ColorRole,
     camera: [T; 3],
     /// Model to world coordinates (`None`: the identity).
     transform: Option<Transform<T>>,
@@ -71,12 +77,14 @@ pub struct Kernel<T: Real> {
 }
 
 impl<T: Real> Kernel<T> {
-    /// Prepares `scene` for arrays of `T`, with `model` taking the arrays to world coordinates.
+    /// Prepares `scene` for arrays of `T` with `options`, whose model takes the arrays to world
+    /// coordinates.
     ///
     /// # Errors
-    /// A value error for a `model` that is not finite, affine and invertible, or whose entries
+    /// A value error for a model that is not finite, affine and invertible, or whose entries
     /// exceed `T`'s range.
-    pub fn new(scene: &Scene, model: Option<&DMat4>, clamp: ColorClamp) -> Result<Self, Error> {
+    pub fn new(scene: &Scene, options: &Options) -> Result<Self, Error> {
+        let (model, clamp): (Option<&DMat4>, ColorClamp) = (options.model.as_ref(), options.clamp);
         let m = &scene.material;
         let base = [m.base_color[0], m.base_color[1], m.base_color[2]];
         let surface = Surface::<T>::new(base, m.metallic, m.roughness);
@@ -122,7 +130,10 @@ impl<T: Real> Kernel<T> {
             lights,
             surface,
             constant: rgb(&constant),
-            alpha: T::from_f64(m.base_color[3]),
+            base: m.base_color.map(T::from_f64),
+            ambient: rgb(&scene.ambient_light),
+            emissive: rgb(&m.emissive),
+            role: options.colors,
             camera: cast_saturating(scene.camera_position.into()),
             transform,
             clamp: clamp == ColorClamp::On,
@@ -135,9 +146,10 @@ impl<T: Real> Kernel<T> {
         &self.plan
     }
 
-    /// Σ nl·radiance·f over the lights that shine, at unit normals `n` and view vectors `v`.
+    /// Σ nl·radiance·f over the lights that shine, at unit normals `n`, view vectors `v` and
+    /// points of `albedo`.
     #[inline(always)]
-    fn lit<V: Lanes<T = T>>(&self, p: V3<V>, n: V3<V>, v: V3<V>) -> V3<V> {
+    fn lit<V: Lanes<T = T>>(&self, p: V3<V>, n: V3<V>, v: V3<V>, albedo: &Albedo<V>) -> V3<V> {
         let least = V::T::from_f64(LEAST_COSINE);
         let nv = n.dot(v);
         let nv = nv.max(-nv).clamp(least, T::ONE);
@@ -166,6 +178,7 @@ impl<T: Real> Kernel<T> {
             let nl = n.dot(l).clamp(least, T::ONE);
             let f = brdf(
                 &self.surface,
+                albedo,
                 n,
                 v,
                 l,
@@ -224,18 +237,37 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
             finite = finite & c[0].is_finite() & c[1].is_finite();
             finite = finite & c[2].is_finite() & c[3].is_finite();
         }
+        // Per-vertex base colours (a texture's) change the albedo and the constant term.
+        let base = match (&input.colors, self.role) {
+            (Some(c), ColorRole::BaseColor) => Some(std::array::from_fn::<V, 4, _>(|k| {
+                V::splat(self.base[k]) * c[k]
+            })),
+            _ => None,
+        };
+        let albedo = match &base {
+            Some(b) => self.surface.albedo_of([b[0], b[1], b[2]]),
+            None => self.surface.splat(),
+        };
         let mut rgb = if self.plan.positions {
             let n = normalize_and_length(n).0;
             let v = normalize_and_length_fast(V3::splat(self.camera) - p).0;
-            self.lit(p, n, v)
+            self.lit(p, n, v, &albedo)
         } else {
             V3::zero()
         };
-        if self.plan.constant {
+        let mut alpha = V::splat(self.base[3]);
+        if let Some(b) = &base {
+            let b3 = V3 {
+                x: b[0],
+                y: b[1],
+                z: b[2],
+            };
+            rgb = b3.mul_add(V3::splat(self.ambient), rgb + V3::splat(self.emissive));
+            alpha = b[3];
+        } else if self.plan.constant {
             rgb = rgb + V3::splat(self.constant);
         }
-        let mut alpha = V::splat(self.alpha);
-        if let Some(c) = &input.colors {
+        if let (Some(c), ColorRole::Multiply) = (&input.colors, self.role) {
             rgb = rgb.mul_elements(V3 {
                 x: c[0],
                 y: c[1],
@@ -287,7 +319,14 @@ mod tests {
         let at = [0.5, -0.25, 1.0];
         let s = scene(Punctual::Point { position: at });
         for clamp in [ColorClamp::On, ColorClamp::Off] {
-            let kernel = Kernel::<f64>::new(&s, None, clamp).unwrap();
+            let kernel = Kernel::<f64>::new(
+                &s,
+                &Options {
+                    clamp,
+                    ..Options::default()
+                },
+            )
+            .unwrap();
             let c = one_vertex(&kernel, at, [0.0, 0.0, 1.0]);
             assert!(c.iter().all(|x| x.is_finite()), "{c:?}");
             assert!(c[0] > 0.0);
@@ -301,7 +340,7 @@ mod tests {
         });
         s.lights[0].intensity = 0.0;
         s.material.emissive = [0.25, 0.0, 0.0];
-        let kernel = Kernel::<f64>::new(&s, None, ColorClamp::On).unwrap();
+        let kernel = Kernel::<f64>::new(&s, &Options::default()).unwrap();
         assert!(!kernel.plan().positions);
         let c = one_vertex(&kernel, [f64::NAN; 3], [0.0, 0.0, 1.0]);
         assert_eq!(c, [0.25, 0.0, 0.0, 0.5]);

@@ -15,6 +15,17 @@ use crate::lighting::shade::{as_uninit, check_rows, run_shader, Inputs};
 use crate::numbers::real::{block_lanes, Real};
 use crate::simd::dispatch::Isa;
 
+/// What a call's per-vertex colours are.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum ColorRole {
+    /// pyrender's `COLOR_0`: they multiply the result, alpha included.
+    #[default]
+    Multiply,
+    /// Linear base colours (a `baseColorTexture`'s decoded texels): they multiply the
+    /// material's base colour factor, RGBA, before the model is evaluated.
+    BaseColor,
+}
+
 /// The options of a metallic-roughness call.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Options {
@@ -24,6 +35,8 @@ pub struct Options {
     /// Whether the colours are clamped to [0, 1] (pyrender clamps after its gamma, which
     /// commutes with the clamp).
     pub clamp: ColorClamp,
+    /// What the per-vertex colours are.
+    pub colors: ColorRole,
 }
 
 /// Lights `positions` with `normals` (both (n, 3), world coordinates unless `options.model`)
@@ -73,7 +86,7 @@ pub fn shade_uninit<T: Real>(
     stop: &Stop,
 ) -> Result<(), Error> {
     check_rows(positions, normals, colors, 1, out.len())?;
-    let kernel = Kernel::<T>::new(scene, options.model.as_ref(), options.clamp)?;
+    let kernel = Kernel::<T>::new(scene, options)?;
     let inputs = Inputs {
         positions,
         normals,
@@ -88,7 +101,7 @@ pub fn shade_uninit<T: Real>(
 /// # Errors
 /// As [`shade`] for an invalid `model`.
 pub fn describe<T: Real>(scene: &ValidScene, options: &Options) -> Result<String, Error> {
-    let kernel = Kernel::<T>::new(scene, options.model.as_ref(), options.clamp)?;
+    let kernel = Kernel::<T>::new(scene, options)?;
     let isa = Isa::detect();
     Ok(format!(
         "metallic-roughness (pyrender's mesh.frag): float{} arithmetic, {}, {} vertices per \
