@@ -155,6 +155,10 @@ def render(
     cull: str,
     background: NDArray[np.float64],
     clamp: bool,
+    texture: NDArray[np.float32] | None,
+    uv: NDArray[np.floating[Any]] | None,
+    texture_filter: str,
+    texture_wrap: tuple[str, str],
 ) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...
 
 @final

@@ -15,6 +15,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from ._intake import accuracy_choice
 from ._scene import Scene
+from .gltf import Scene as GltfScene
 
 __all__ = ["shade_lazily"]
 
@@ -25,7 +26,7 @@ def shade_lazily(
     shade: ShadeFunction,
     positions: ArrayLike | da.Array,
     normals: ArrayLike | da.Array,
-    scene: Scene,
+    scene: Scene | GltfScene,
     colors: ArrayLike | da.Array | None,
     shade_kwargs: Mapping[str, Any],
 ) -> da.Array:

@@ -7,8 +7,9 @@ Every primitive is drawn by `render` with its material's `gltf.Scene` and the de
 positions ``M @ p``, world normals normalised per vertex before interpolation (its vertex
 shader's ``normalize(N * n)``), ``COLOR_0`` multiplying the result, back faces culled unless the
 material is double-sided, and its emissive term ``emissiveFactor²``. Left out and refused with
-a clear error: textures, the specular-glossiness material, primitives other than triangles or
-without normals; not modelled: shadows (off in pyrender by default), alpha blending of
+a clear error: textures other than the base colour's (metallic-roughness, normal, occlusion,
+emissive), the specular-glossiness material, primitives other than triangles or without
+normals; not modelled: shadows (off in pyrender by default), alpha blending of
 transparent primitives (each pixel keeps its nearest primitive, with its alpha).
 """
 
@@ -29,10 +30,13 @@ __all__ = ["is_pyrender_scene", "render_pyrender"]
 # pyrender's MAX_N_LIGHTS: lights of each kind its shader takes (constants.py).
 MAX_LIGHTS = 4
 TRIANGLES = 4  # GLTF.TRIANGLES
-TEXTURES = (
-    "baseColorTexture", "metallicRoughnessTexture", "normalTexture", "occlusionTexture",
-    "emissiveTexture",
+# The textures of a metallic-roughness material glshade does not apply (the base colour's it does).
+UNSUPPORTED_TEXTURES = (
+    "metallicRoughnessTexture", "normalTexture", "occlusionTexture", "emissiveTexture",
 )  # fmt: skip
+# GL's enums for a sampler's filter and wrap modes, as pyrender keeps them.
+FILTERS = {9728: "nearest", 9729: "linear"}
+WRAPS = {10497: "repeat", 33648: "mirrored_repeat", 33071: "clamp_to_edge"}
 
 
 def is_pyrender_scene(obj: object) -> bool:
@@ -81,10 +85,10 @@ def _material(material: Any) -> gltf.Material:
         raise NotImplementedError(
             f"glshade renders pyrender's MetallicRoughnessMaterial only, got a {kind}"
         )
-    textured = [name for name in TEXTURES if getattr(material, name, None) is not None]
+    textured = [name for name in UNSUPPORTED_TEXTURES if getattr(material, name, None) is not None]
     if textured:
         raise NotImplementedError(
-            f"glshade does not apply textures yet: the material has {textured}"
+            f"glshade applies base colour textures only: the material has {textured}"
         )
     emissive = np.asarray(material.emissiveFactor, dtype=np.float64)
     return gltf.Material(
@@ -93,6 +97,32 @@ def _material(material: Any) -> gltf.Material:
         roughness=float(material.roughnessFactor),
         emissive=tuple(emissive * emissive),
     )
+
+
+def _texture(primitive: Any) -> dict[str, Any]:
+    """`render`'s texture arguments for a primitive's ``baseColorTexture``: its image (top row
+    first, as pyrender holds it before flipping it onto GL's rows), ``TEXCOORD_0``, and the
+    sampler's filter (pyrender magnifies with GL_LINEAR unless told otherwise) and wraps."""
+    texture = primitive.material.baseColorTexture
+    if texture is None:
+        return {"texture": False}
+    if primitive.texcoord_0 is None:
+        raise ValueError("the primitive has a baseColorTexture but no texcoord_0")
+    if primitive.color_0 is not None:
+        raise NotImplementedError(
+            "the primitive has vertex colours and a base colour texture; glshade takes one"
+        )
+    sampler = texture.sampler
+    magnify = getattr(sampler, "magFilter", None)
+    return {
+        "texture": texture.source,
+        "uv": np.asarray(primitive.texcoord_0, dtype=np.float64),
+        "texture_filter": FILTERS.get(magnify, "linear") if magnify is not None else "linear",
+        "texture_wrap": (
+            WRAPS.get(getattr(sampler, "wrapS", 10497), "repeat"),
+            WRAPS.get(getattr(sampler, "wrapT", 10497), "repeat"),
+        ),
+    }
 
 
 def _world(primitive: Any, model: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -156,7 +186,7 @@ def render_pyrender(
                 drawn, z = render(
                     v, faces, lit, camera, width=width, height=height, shading="phong",
                     normals=n, colors=False if colors is None else colors, cull=cull,
-                    transfer="linear", clamp=clamp, depth=True,
+                    transfer="linear", clamp=clamp, depth=True, **_texture(primitive),
                 )  # fmt: skip
                 nearer = z < nearest
                 image[nearer] = drawn[nearer]

@@ -25,6 +25,7 @@ from ._intake import (
 from ._pyrender import is_pyrender_scene, render_pyrender
 from ._render_input import render_input
 from ._scene import Scene
+from ._texture import FILTERS, texels, wrap_modes
 from ._transfer import Transfer, apply_transfer, transfer_name
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, Shading, Space
 from .gltf import Scene as GltfScene
@@ -54,6 +55,10 @@ def render(
     lights_in: Space = ...,
     transfer: Transfer | None = ...,
     clamp: bool = ...,
+    texture: Any = ...,
+    uv: ArrayLike | None = ...,
+    texture_filter: str = ...,
+    texture_wrap: str | tuple[str, str] = ...,
     depth: Literal[False] = ...,
 ) -> Image: ...
 @overload
@@ -78,6 +83,10 @@ def render(
     lights_in: Space = ...,
     transfer: Transfer | None = ...,
     clamp: bool = ...,
+    texture: Any = ...,
+    uv: ArrayLike | None = ...,
+    texture_filter: str = ...,
+    texture_wrap: str | tuple[str, str] = ...,
     depth: Literal[True],
 ) -> tuple[Image, FloatArray]: ...
 @overload
@@ -102,6 +111,10 @@ def render(
     lights_in: Space = ...,
     transfer: Transfer | None = ...,
     clamp: bool = ...,
+    texture: Any = ...,
+    uv: ArrayLike | None = ...,
+    texture_filter: str = ...,
+    texture_wrap: str | tuple[str, str] = ...,
     depth: bool,
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
@@ -125,6 +138,10 @@ def render(
     lights_in: Space = "eye",
     transfer: Transfer | None = None,
     clamp: bool = True,
+    texture: Any = None,
+    uv: ArrayLike | None = None,
+    texture_filter: str = "linear",
+    texture_wrap: str | tuple[str, str] = "repeat",
     depth: bool = False,
 ) -> Image | tuple[Image, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -219,6 +236,23 @@ def render(
         GL's clamp of the colours to [0, 1] (the default). False keeps what the lighting
         equation and the colour sum give, values above 1 included (high dynamic range), as
         `shade` with ``clamp=False`` does; the background and alpha as given.
+    texture : image, optional, or False
+        A texture: (height, width), (height, width, 1, 2, 3 or 4) uint8, uint16 or float, or a
+        PIL image, its top row first. With GL's model it multiplies every fragment's primary
+        colour, before the separate specular is added (``GL_MODULATE``); with a
+        `glshade.gltf.Scene` it is glTF's ``baseColorTexture``: decoded from sRGB and
+        multiplied into the base colour wherever the model is evaluated (per pixel with Phong
+        shading, at the vertices with Gouraud, at the provoking vertex with flat shading).
+        Default: a trimesh mesh's own (``visual.kind == "texture"``: its material's
+        ``baseColorTexture`` or ``image``, and its ``visual.uv``); False: none.
+    uv : (n, 2) float, optional
+        Texture coordinates per vertex, interpolated perspective-correctly; (0, 0) is the
+        image's lower-left corner and (1, 1) its upper-right (GL's and trimesh's convention).
+    texture_filter : {"linear", "nearest"}
+        GL's bilinear filter (pyrender's magnification filter) or the nearest texel. There are
+        no mipmaps: where a texture is minified, pyrender's trilinear mipmapping differs.
+    texture_wrap : {"repeat", "mirrored_repeat", "clamp_to_edge"}, or a pair (s, t)
+        What coordinates outside [0, 1] read, GL's wrap modes (glTF's default: repeat).
     depth : bool
         Also return the depth buffer.
 
@@ -285,6 +319,8 @@ def render(
         model=model,
         width=w,
         height=h,
+        texture=texture,
+        uv=uv,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
     if isinstance(given.scene, GltfScene):
@@ -322,6 +358,10 @@ def render(
         cull="none" if cull is None else choice(cull, "cull"),
         background=np.array(clear),
         clamp=flag(clamp, "clamp"),
+        texture=None if given.texture is None else texels(given.texture),
+        uv=given.uv,
+        texture_filter=one_of(texture_filter, "texture_filter", FILTERS),
+        texture_wrap=wrap_modes(texture_wrap),
     )
     result = apply_transfer(image, encoding).view(Image)
     return (result, z) if depth else result

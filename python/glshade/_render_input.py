@@ -15,7 +15,7 @@ from ._framing import default_scene, frame
 from ._intake import color_values, one_of, rows, transform, vertex_colors
 from ._normals import vertex_normals
 from ._scene import Scene
-from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors
+from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors, mesh_texture
 from ._typing import FloatArray
 from .gltf import Scene as GltfScene
 
@@ -32,6 +32,8 @@ class RenderInput:
     color_material: str | None
     scene: Scene | GltfScene
     camera: Camera
+    uv: FloatArray | None = None
+    texture: Any = None
 
 
 def is_pair(obj: Any) -> bool:
@@ -102,6 +104,8 @@ def render_input(
     model: ArrayLike | None = None,
     width: int | None = None,
     height: int | None = None,
+    texture: Any = None,
+    uv: ArrayLike | None = None,
 ) -> RenderInput:
     """Checks and prepares `render`'s arguments (see `render` for their meaning). Without a
     camera, one framing the mesh (placed by `model`) in an image of `width` x `height` (square
@@ -120,9 +124,21 @@ def render_input(
         own = mesh_colors(mesh)
     elif colors is not None and colors is not False:
         own = (color_values(vertex_colors(colors)), "vertex")
-    c = n = None
+    c = n = t = None
     if normals is not None:
         n = rows(normals, "normals", v.dtype)
+    if texture is None and uv is None and mesh is not None:
+        found = mesh_texture(mesh)
+        if found is not None:
+            uv, texture = found
+    if texture is not None and texture is not False:
+        if uv is None:
+            raise ValueError("a texture needs uv: texture coordinates, one (u, v) per vertex")
+        t = rows(uv, "uv", v.dtype, (2,))
+        if len(t) != len(v):
+            raise ValueError(f"uv must have one row per vertex ({len(v)}), got shape {t.shape}")
+    elif uv is not None and texture is None:
+        raise ValueError("uv was given without a texture")
     if own is not None:
         values, per = own
         expected = len(f) if per == "face" else len(v)
@@ -139,13 +155,15 @@ def render_input(
                 n = vertex_normals(v, f) if n is None else n
                 n = n[f].reshape(-1, 3)
             v, c = v[f].reshape(-1, 3), np.repeat(c, 3, axis=0)
+            t = None if t is None else t[f].reshape(-1, 2)
             f = np.arange(3 * len(f), dtype=np.int64).reshape(-1, 3)
+    image = None if t is None else texture
     if isinstance(scene, GltfScene):
         # World coordinates always; the native render puts the camera at the view's eye.
-        return RenderInput(v, f, n, c, None, scene, camera)
+        return RenderInput(v, f, n, c, None, scene, camera, t, image)
     if scene is None:
         # The default lights belong to the world: an orbiting camera sees them stay put.
         eye_scene = default_scene().in_eye_space(camera.view)
     else:
         eye_scene = scene.in_eye_space(camera.view) if space == "world" else scene
-    return RenderInput(v, f, n, c, color_material, eye_scene, camera)
+    return RenderInput(v, f, n, c, color_material, eye_scene, camera, t, image)

@@ -4,7 +4,7 @@ collections go to `_lazy`, which shades them chunk by chunk with this same funct
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from typing import ParamSpec, TypeVar, cast
 
 import numpy as np
@@ -206,7 +206,7 @@ def _shade_gltf(
     accuracy: str,
     clamp: bool,
     out: FloatArray | None,
-    gl_options: dict[str, tuple[object, object]],
+    gl_options: Mapping[str, tuple[object, object]],
 ) -> FloatArray:
     """`shade` with the metallic-roughness model; the GL model's options must be left at their
     defaults. "exact" computes float32 arrays in float64 and rounds the result once."""

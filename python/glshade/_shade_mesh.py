@@ -13,10 +13,10 @@ from ._intake import matrix, one_of
 from ._normals import face_normals, vertex_normals
 from ._render_input import is_pair
 from ._scene import Scene
-from .gltf import Scene as GltfScene
 from ._shade import shade
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Per, Weighting
+from .gltf import Scene as GltfScene
 
 __all__ = ["shade_mesh"]
 

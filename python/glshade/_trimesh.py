@@ -65,3 +65,19 @@ def mesh_colors(mesh: Any) -> tuple[NDArray[Any], Per] | None:
     if kind == "face":
         return np.asarray(visual.face_colors), "face"  # type: ignore[union-attr]
     return None
+
+
+def mesh_texture(mesh: Any) -> tuple[NDArray[Any], Any] | None:
+    """The texture coordinates (n, 2) and base-colour image of a mesh whose ``visual`` is of
+    kind "texture" (trimesh's ``TextureVisuals``: a ``PBRMaterial``'s ``baseColorTexture`` or a
+    ``SimpleMaterial``'s ``image``, PIL images), or None."""
+    visual = getattr(mesh, "visual", None)
+    if getattr(visual, "kind", None) != "texture" or getattr(visual, "uv", None) is None:
+        return None
+    material = getattr(visual, "material", None)
+    image = getattr(material, "baseColorTexture", None)
+    if image is None:
+        image = getattr(material, "image", None)
+    if image is None:
+        return None
+    return np.asarray(visual.uv), image  # type: ignore[union-attr]

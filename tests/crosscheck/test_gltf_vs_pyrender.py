@@ -32,13 +32,9 @@ FLOAT32 = 2e-5
 SEEDS = (0, 1, 2)
 
 
-@pytest.fixture(scope="module")
+@pytest.fixture
 def renderer() -> Any:
-    r = glpeers.gl_resource(
-        "pyrender OffscreenRenderer (EGL)", lambda: pyrender.OffscreenRenderer(WIDTH, HEIGHT)
-    )
-    yield r
-    r.delete()
+    return glpeers.pyrender_renderer(WIDTH, HEIGHT)
 
 
 def pose(position: tuple[float, float, float], target: tuple[float, float, float]) -> np.ndarray:

@@ -69,6 +69,18 @@ def gl_resource(what: str, make: Any) -> Any:
         unavailable(_failures[what])
 
 
+@functools.cache
+def pyrender_renderer(width: int, height: int) -> Any:
+    """One stock pyrender OffscreenRenderer per size for the session, never deleted: its
+    delete() calls eglTerminate on the EGL display moderngl's context shares, which would break
+    every later GL test."""
+    import pyrender
+
+    return gl_resource(
+        "pyrender OffscreenRenderer (EGL)", lambda: pyrender.OffscreenRenderer(width, height)
+    )
+
+
 # ---------------------------------------------------------------------------------------------
 # moderngl
 

@@ -132,12 +132,16 @@ def ray_cast(m: Any, projection: np.ndarray, offset: tuple[float, float]) -> Hit
 
 @functools.cache
 def interior(seed: int) -> tuple[Hits, np.ndarray]:
-    """The hits through the pixel centres of mesh(seed), and the pixels whose centre and four
-    MSAA samples, each moved by SNAP either way, all hit the centre's face with nothing within
-    1e-3 behind it (a depth test could tie): the resolve then averages four equal samples,
-    the fragment's value at the centre."""
+    """`interior_of` mesh(seed)."""
     m = mesh(seed)
-    projection = pyrender_scene(m)[1]
+    return interior_of(m, pyrender_scene(m)[1])
+
+
+def interior_of(m: Any, projection: np.ndarray) -> tuple[Hits, np.ndarray]:
+    """The hits through the pixel centres of trimesh `m` seen through `projection` from the
+    origin, and the pixels whose centre and four MSAA samples, each moved by SNAP either way,
+    all hit the centre's face with nothing within 1e-3 behind it (a depth test could tie): the
+    resolve then averages four equal samples, the fragment's value at the centre."""
     centre = ray_cast(m, projection, (0.0, 0.0))
     inside = (centre.face >= 0) & (centre.gap > 1e-3)
     for x, y in ((0.0, 0.0), *SAMPLES):

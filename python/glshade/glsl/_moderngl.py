@@ -519,6 +519,7 @@ def render(
         model=m,
         width=w,
         height=h,
+        texture=False,
     )
     if not isinstance(given.scene, Scene):
         raise TypeError(

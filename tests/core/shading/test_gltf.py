@@ -235,3 +235,24 @@ def test_scenes_compare_and_pickle() -> None:
     assert scene.with_camera((1, 2, 3)) != scene
     p, n = vertices(rng, scene, 50)
     np.testing.assert_array_equal(gs.shade(p, n, again), gs.shade(p, n, scene))
+
+
+@pytest.mark.parametrize("shading", ["phong", "gouraud", "flat"])
+def test_render_clamp_false_keeps_values_above_one(shading: str) -> None:
+    scene = gs.gltf.Scene(
+        [gs.gltf.DirectionalLight(intensity=30.0, direction=(-1, -1, -1))],
+        gs.gltf.Material((0.9, 0.8, 0.7, 1.0), 0.2, 0.3),
+    )
+    mesh = gs.meshes.torus(32, 16, 1.0, 0.4)
+    hdr = gs.render(mesh, scene, width=48, height=40, shading=shading, clamp=False)
+    clamped = gs.render(mesh, scene, width=48, height=40, shading=shading)
+    assert hdr[..., :3].max() > 1.5
+    if shading == "gouraud":
+        # GL clamps the vertex colours before interpolating them: a pixel between a vertex
+        # above 1 and one below differs; at the vertices it is `shade`'s rule (tested above).
+        assert (clamped <= 1).all() and (hdr >= clamped - 1e-15).all()
+        return
+    inside = (hdr > 0) & (hdr < 1)
+    assert inside[..., :3].sum() > 100
+    np.testing.assert_allclose(clamped[inside], hdr[inside], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(clamped, np.clip(hdr, 0, 1), rtol=0, atol=1e-15)
