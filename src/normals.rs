@@ -13,6 +13,7 @@
 //! [`crate::numbers`], [`crate::simd`], [`crate::memory`] and [`crate::errors`].
 
 pub mod adjacency;
+pub mod crease;
 pub mod triangle;
 
 use glam::DVec3;
@@ -143,7 +144,7 @@ pub fn face_normals<T: Real>(
 
 /// What the faces add to their vertices, one entry per face. The buffers are fresh on every
 /// call, so their size is paid in page faults: 24 to 48 bytes a face.
-enum FaceTerms {
+pub(crate) enum FaceTerms {
     /// Area weighting: the raw cross product and its length.
     Area(Zeroed<[f64; 4]>),
     /// Uniform weighting: the unit normals (zero if degenerate).
@@ -158,7 +159,7 @@ impl FaceTerms {
     ///
     /// # Errors
     /// A memory error for the buffers, or [`Error::interrupted`].
-    fn new<T: Real>(
+    pub(crate) fn new<T: Real>(
         vertices: &[[T; 3]],
         faces: &[[i64; 3]],
         weighting: Weighting,
@@ -263,21 +264,8 @@ pub fn vertex_normals<T: Real>(
     out: &mut [[T; 3]],
     stop: &Stop,
 ) -> Result<(), Error> {
-    check_faces(faces, vertices.len())?;
     check_rows(out, vertices.len())?;
-    if faces.len() > Adjacency::MAX_FACES {
-        return Err(Error::value(format!(
-            "faces must have at most {} rows, got {}",
-            Adjacency::MAX_FACES,
-            faces.len()
-        )));
-    }
-    // The adjacency's counting sort is sequential: build it while the faces are computed.
-    let (adjacency, terms) = rayon::join(
-        || Adjacency::new(faces, vertices.len(), stop),
-        || FaceTerms::new(vertices, faces, weighting, stop),
-    );
-    let (adjacency, terms) = (adjacency?, terms?);
+    let (adjacency, terms) = adjacency_and_terms(vertices, faces, weighting, stop)?;
     let cancel = CANCELLED_ULPS * T::EPSILON.to_f64();
     // Corner `k` (`3·face + corner`) adds a vector and its length to its vertex.
     match &terms {
@@ -306,6 +294,33 @@ pub fn vertex_normals<T: Real>(
     stop.check()
 }
 
+/// The vertex-to-face adjacency of checked `faces` and their terms under `weighting`, built
+/// side by side (the adjacency's counting sort is sequential).
+///
+/// # Errors
+/// An index error for an index outside the vertices, a value error for more faces than the
+/// adjacency holds, a memory error, or [`Error::interrupted`].
+fn adjacency_and_terms<T: Real>(
+    vertices: &[[T; 3]],
+    faces: &[[i64; 3]],
+    weighting: Weighting,
+    stop: &Stop,
+) -> Result<(Adjacency, FaceTerms), Error> {
+    check_faces(faces, vertices.len())?;
+    if faces.len() > Adjacency::MAX_FACES {
+        return Err(Error::value(format!(
+            "faces must have at most {} rows, got {}",
+            Adjacency::MAX_FACES,
+            faces.len()
+        )));
+    }
+    let (adjacency, terms) = rayon::join(
+        || Adjacency::new(faces, vertices.len(), stop),
+        || FaceTerms::new(vertices, faces, weighting, stop),
+    );
+    Ok((adjacency?, terms?))
+}
+
 /// Writes the normalised sum of every vertex's corner terms into `out` (one row per vertex), or
 /// zero where the sum is at most `cancel` times the sum of the terms' lengths; tasks that start
 /// after `stop` is requested are skipped.
@@ -327,14 +342,22 @@ where
                     sum += term;
                     magnitude += length;
                 }
-                let (unit, length) = normalize_and_length::<f64>(sum);
-                *d = if length <= cancel * magnitude {
-                    [T::ZERO; 3]
-                } else {
-                    unit.to_array().map(T::from_f64)
-                };
+                *d = unit_or_zero(sum, magnitude, cancel);
             }
         });
+}
+
+/// `sum` normalised and rounded to `T`, or zero where its length is at most `cancel` times
+/// `magnitude` (the sum of its terms' lengths): what is left is rounding noise, with no
+/// direction.
+#[inline]
+fn unit_or_zero<T: Real>(sum: DVec3, magnitude: f64, cancel: f64) -> [T; 3] {
+    let (unit, length) = normalize_and_length::<f64>(sum);
+    if length <= cancel * magnitude {
+        [T::ZERO; 3]
+    } else {
+        unit.to_array().map(T::from_f64)
+    }
 }
 
 #[cfg(test)]

@@ -49,7 +49,7 @@ mod _glshade {
     #[pymodule_export]
     use super::gltf::{describe_gltf, shade_gltf, GltfScene};
     #[pymodule_export]
-    use super::normals::{face_normals, vertex_normals};
+    use super::normals::{crease_normals, face_normals, vertex_normals};
     #[pymodule_export]
     use super::render::render;
     #[pymodule_export]

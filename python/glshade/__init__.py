@@ -16,7 +16,7 @@ from ._compare import Comparison, compare
 from ._glshade import __version__
 from ._image import Image
 from ._intake import ColorRangeWarning
-from ._normals import face_normals, vertex_normals
+from ._normals import crease_normals, face_normals, vertex_normals
 from ._render import render
 from ._scene import Light, Lights, Material, Scene
 from ._shade import shade
@@ -38,6 +38,7 @@ __all__ = [
     "Scene",
     "__version__",
     "compare",
+    "crease_normals",
     "disc_light",
     "face_normals",
     "glsl",

@@ -12,6 +12,7 @@ __all__ = [
     "Material",
     "Scene",
     "__version__",
+    "crease_normals",
     "describe",
     "describe_gltf",
     "face_normals",
@@ -202,3 +203,9 @@ def describe_gltf(
     clamp: bool,
     dtype: str,
 ) -> str: ...
+def crease_normals(
+    vertices: NDArray[np.floating[Any]],
+    faces: NDArray[np.int64],
+    weighting: str,
+    angle: float,
+) -> NDArray[np.floating[Any]]: ...

@@ -192,9 +192,10 @@ def render(
         smooth shading), or once per face with its face normal at its last vertex (``"flat"``,
         GL's flat shading with the provoking vertex convention). This name and the others
         below are case-insensitive (``"Phong"``).
-    normals : (n, 3) or (m, 3) float, optional
-        One normal per vertex for Phong and Gouraud, one per face for flat shading. Default:
-        `vertex_normals` (angle-weighted) or `face_normals` of the mesh.
+    normals : (n, 3), (m, 3) or (m, 3, 3) float, optional
+        One normal per vertex for Phong and Gouraud, one per face for flat shading; or, for
+        Phong and Gouraud, one per face corner (`crease_normals`: each face then gets corners
+        of its own). Default: `vertex_normals` (angle-weighted) or `face_normals` of the mesh.
     colors : (n, 3) or (n, 4) float or uint8, optional, or False
         Per-vertex colours for ``GL_COLOR_MATERIAL``, interpolated like the normals (flat
         shading takes the last vertex's); uint8 colours are scaled by 1/255. `color_material`

@@ -125,7 +125,8 @@ def render_input(
     elif colors is not None and colors is not False:
         own = (color_values(vertex_colors(colors)), "vertex")
     c = n = t = None
-    if normals is not None:
+    corner_normals = normals is not None and np.ndim(normals) == 3
+    if normals is not None and not corner_normals:
         n = rows(normals, "normals", v.dtype)
     if texture is None and uv is None and mesh is not None:
         found = mesh_texture(mesh)
@@ -139,6 +140,25 @@ def render_input(
             raise ValueError(f"uv must have one row per vertex ({len(v)}), got shape {t.shape}")
     elif uv is not None and texture is None:
         raise ValueError("uv was given without a texture")
+    if corner_normals:
+        # One normal per face corner (`crease_normals`): every face gets corners of its own.
+        given = np.asarray(normals)
+        if given.shape != (len(f), 3, 3):
+            raise ValueError(
+                f"per-corner normals must have shape ({len(f)}, 3, 3), got {given.shape}"
+            )
+        if isinstance(shading, str) and shading.lower() == "flat":
+            raise ValueError(
+                "per-corner normals (m, 3, 3) are for phong and gouraud shading; flat shading "
+                "takes one normal per face"
+            )
+        n = rows(given.reshape(-1, 3), "normals", v.dtype)
+        if own is not None and own[1] == "vertex":
+            values = np.asarray(own[0])
+            own = (values[f].reshape(-1, values.shape[1]), "vertex")
+        t = None if t is None else t[f].reshape(-1, 2)
+        v = v[f].reshape(-1, 3)
+        f = np.arange(len(v), dtype=np.int64).reshape(-1, 3)
     if own is not None:
         values, per = own
         expected = len(f) if per == "face" else len(v)
