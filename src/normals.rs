@@ -364,7 +364,8 @@ fn unit_or_zero<T: Real>(sum: DVec3, magnitude: f64, cancel: f64) -> [T; 3] {
 mod tests {
     use super::*;
 
-    fn cube() -> (Vec<[f64; 3]>, Vec<[i64; 3]>) {
+    /// A unit cube of 12 faces, counter-clockwise seen from outside.
+    pub(crate) fn cube() -> (Vec<[f64; 3]>, Vec<[i64; 3]>) {
         let v = (0..8)
             .map(|i| {
                 [

@@ -133,34 +133,7 @@ impl Corners<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// A unit cube of 12 faces, outward.
-    fn cube() -> (Vec<[f64; 3]>, Vec<[i64; 3]>) {
-        let v = (0..8)
-            .map(|i| {
-                [
-                    f64::from(i & 1),
-                    f64::from((i >> 1) & 1),
-                    f64::from((i >> 2) & 1),
-                ]
-            })
-            .collect();
-        let f = vec![
-            [0, 2, 1],
-            [1, 2, 3],
-            [4, 5, 6],
-            [5, 7, 6],
-            [0, 1, 4],
-            [1, 5, 4],
-            [2, 6, 3],
-            [3, 6, 7],
-            [0, 4, 2],
-            [2, 4, 6],
-            [1, 3, 5],
-            [3, 7, 5],
-        ];
-        (v, f)
-    }
+    use crate::normals::tests::cube;
 
     #[test]
     fn a_cube_keeps_its_faces_flat_below_90_degrees() {
