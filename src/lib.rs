@@ -24,7 +24,8 @@
 //! | `python` | the binding (feature `python`): validates, releases the GIL, calls the core |
 //! | `lab` | the streaming floor of `bench shade` (feature `lab`, on with `python`) |
 //! | `render` | camera, clipping, rasterisation, visibility, the shading passes |
-//! | `normals` | face and vertex normals, the vertex-to-face adjacency |
+//! | `relief` | matplotlib's relief shading of elevation grids: hillshade, blends |
+//! | `normals` | face, vertex and corner (creased) normals, the vertex-to-face adjacency |
 //! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade`; the metallic-roughness model |
 //! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
 //! | `gltf` | glTF state: the metallic-roughness material, punctual lights, the scene |
@@ -41,6 +42,8 @@ mod python;
 mod lab;
 
 mod render;
+
+mod relief;
 
 mod normals;
 

@@ -16,6 +16,7 @@ mod camera;
 mod faces;
 mod gltf;
 mod normals;
+mod relief;
 mod render;
 mod runtime;
 mod scene;
@@ -50,6 +51,8 @@ mod _glshade {
     use super::gltf::{describe_gltf, shade_gltf, GltfScene};
     #[pymodule_export]
     use super::normals::{crease_normals, face_normals, vertex_normals};
+    #[pymodule_export]
+    use super::relief::{blend, hillshade, shade_normals};
     #[pymodule_export]
     use super::render::render;
     #[pymodule_export]

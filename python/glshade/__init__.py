@@ -9,7 +9,7 @@
 
 from typing import TYPE_CHECKING, Any
 
-from . import glsl, gltf, meshes, presets
+from . import glsl, gltf, meshes, presets, relief
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
@@ -46,6 +46,7 @@ __all__ = [
     "meshes",
     "presets",
     "rectangle_light",
+    "relief",
     "render",
     "report",
     "shade",

@@ -12,16 +12,19 @@ __all__ = [
     "Material",
     "Scene",
     "__version__",
+    "blend",
     "crease_normals",
     "describe",
     "describe_gltf",
     "face_normals",
+    "hillshade",
     "look_at",
     "orthographic",
     "perspective",
     "render",
     "shade",
     "shade_gltf",
+    "shade_normals",
     "stream",
     "vertex_normals",
 ]
@@ -209,3 +212,22 @@ def crease_normals(
     weighting: str,
     angle: float,
 ) -> NDArray[np.floating[Any]]: ...
+def hillshade(
+    elevation: NDArray[np.float64],
+    *,
+    vert_exag: float,
+    dx: float,
+    dy: float,
+    direction: tuple[float, ...],
+    fraction: float,
+) -> NDArray[np.float64]: ...
+def shade_normals(
+    normals: NDArray[np.float64], *, direction: tuple[float, ...], fraction: float
+) -> NDArray[np.float64]: ...
+def blend(
+    rgb: NDArray[np.float64],
+    intensity: NDArray[np.float64],
+    *,
+    mode: str,
+    hsv: tuple[float, ...],
+) -> NDArray[np.float64]: ...

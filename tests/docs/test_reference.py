@@ -18,6 +18,7 @@ MODULES = {
     "glshade.presets": "presets.md",
     "glshade.glsl": "glsl.md",
     "glshade.gltf": "gltf.md",
+    "glshade.relief": "relief.md",
     "glshade.dask": "dask.md",
     "glshade.lab.report": "lab.md",
     "glshade.lab.studies": "lab.md",
@@ -25,7 +26,7 @@ MODULES = {
     "glshade.lab.machine": "lab.md",
 }
 # Names the reference gives a page or a sentence of their own rather than an entry.
-ELSEWHERE = {"glsl", "gltf", "meshes", "presets", "__version__", "report", "Report"}
+ELSEWHERE = {"glsl", "gltf", "relief", "meshes", "presets", "__version__", "report", "Report"}
 
 
 def documented(page: str, module: str) -> set[str]:

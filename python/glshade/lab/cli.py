@@ -1,4 +1,4 @@
-"""Command line: ``python -m glshade demo|report|bench shade|normals|render|cluster``."""
+"""Command line: ``python -m glshade demo|report|bench shade|normals|render|cluster|relief``."""
 
 from __future__ import annotations
 
@@ -131,8 +131,13 @@ def _parser() -> argparse.ArgumentParser:
     cluster.add_argument(
         "--dir", help="where the scratch .npy files go (default: the temporary directory)"
     )
+    relief = which.add_parser("relief", help="glshade.relief beside matplotlib's LightSource")
+    relief.add_argument("--size", type=_at_least_two, default=2048, help="grid side (default 2048)")
     beside = {"shade": "; a .csv of one row per scene, size and method beside it"}
-    benches = ((shade, "shade"), (normals, "normals"), (render, "render"), (cluster, "cluster"))
+    benches = (
+        (shade, "shade"), (normals, "normals"), (render, "render"), (cluster, "cluster"),
+        (relief, "relief"),
+    )  # fmt: skip
     for sub, name in benches:
         sub.add_argument("--repeat", type=_positive, default=7, help="rounds (default 7)")
         sub.add_argument(
@@ -181,6 +186,10 @@ def main(argv: Sequence[str] | None = None) -> int:
             )
         if args.what == "render":
             return bench.bench_render(args.faces, args.size, args.repeat, args.json)
+        if args.what == "relief":
+            from .bench_relief import bench_relief
+
+            return bench_relief(args.size, args.repeat, args.json)
         if args.what == "cluster":
             from .bench_cluster import bench_cluster
 
