@@ -7,7 +7,6 @@ import functools
 from collections.abc import Callable, Mapping
 from typing import ParamSpec, TypeVar, cast
 
-import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade, gltf
@@ -71,7 +70,8 @@ def shade(
     scene : Scene or gltf.Scene
         Lights (in eye coordinates), materials and light model. A `glshade.gltf.Scene` lights
         the vertices with glTF's metallic-roughness model as pyrender does instead (world
-        coordinates, normals always normalised, `colors` multiplying the result); the options
+        coordinates, normals always normalised, `colors` multiplying the result, float64
+        arithmetic whatever the dtype); the options
         of the GL model (`modelview`, `normalize`, `rescale_normal`, `color_material`,
         `color_material_face`, `strict`) then do not apply and raise `TypeError` if set.
     modelview : (4, 4) float, optional
@@ -209,7 +209,8 @@ def _shade_gltf(
     gl_options: Mapping[str, tuple[object, object]],
 ) -> FloatArray:
     """`shade` with the metallic-roughness model; the GL model's options must be left at their
-    defaults. "exact" computes float32 arrays in float64 and rounds the result once."""
+    defaults. Both accuracies compute in float64 (float32 arrays widened, the result rounded
+    once): the model's float32 arithmetic is not within 1e-5 where it is ill-conditioned."""
     for name, (value, default) in gl_options.items():
         same = value is default or (isinstance(value, (bool, str)) and value == default)
         if not same:
@@ -224,16 +225,6 @@ def _shade_gltf(
     if out is not None:
         out = out_array(out, {"positions": p, "normals": n, "colors": c})
     unclamped = not flag(clamp, "clamp")
-    if accuracy == "exact" and p.dtype == np.float32:
-        wide = None if c is None else c.astype(np.float64)
-        result = _glshade.shade_gltf(
-            p.astype(np.float64), n.astype(np.float64), scene._native, colors=wide, model=None,
-            clamp=not unclamped, out=None,
-        )  # fmt: skip
-        if out is None:
-            return cast(FloatArray, result.astype(np.float32))
-        out[...] = result
-        return out
     return _glshade.shade_gltf(
         p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
     )

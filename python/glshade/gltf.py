@@ -326,8 +326,9 @@ class Scene:
         )
 
     def plan(self, dtype: Any = np.float32, *, clamp: bool = True) -> str:
-        """One line saying what `glshade.shade` computes for this scene in `dtype`: the
-        arithmetic, the instruction set, the lanes per block, and which lights and terms run
+        """One line saying what `glshade.shade` computes for this scene with arrays of `dtype`:
+        the arithmetic (float64, float32 arrays widened), the instruction set, the lanes per
+        block, and which lights and terms run
         (a light of zero intensity or colour is skipped; the diffuse part runs only for
         metallic < 1 and a base colour that is not black).
         """

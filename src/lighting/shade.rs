@@ -335,38 +335,68 @@ pub fn shade_uninit<T: Real>(
     }
     let prepared = Prepared::<f64>::new(scene, options)?;
     let plan = Plan::new(&prepared);
+    let inputs = Inputs {
+        positions,
+        normals,
+        colors,
+    };
+    in_float64(inputs, plan.positions, out, stop, |inputs, wide, stop| {
+        run(
+            &prepared,
+            &plan,
+            Isa::detect(),
+            inputs.positions,
+            inputs.normals,
+            inputs.colors,
+            wide,
+            stop,
+        )
+    })
+}
+
+/// `compute` over the arrays of `inputs` widened to `f64` (positions only when
+/// `read_positions`: unread, they are not copied), its `f64` result rounded once into `out`,
+/// saturated at `T::MAX`: the arithmetic of [`Accuracy::Exact`] for `f32` arrays.
+///
+/// # Errors
+/// A memory error for the widened copies, [`Error::interrupted`], or those of `compute`.
+pub(crate) fn in_float64<T: Real>(
+    inputs: Inputs<'_, T>,
+    read_positions: bool,
+    out: &mut [MaybeUninit<T>],
+    stop: &Stop,
+    compute: impl FnOnce(Inputs<'_, f64>, &mut [MaybeUninit<f64>], &Stop) -> Result<(), Error>,
+) -> Result<(), Error> {
     let row = |r: &[T; 3]| r.map(T::to_f64);
-    let data = match colors {
+    let data = match inputs.colors {
         Some(c) => widened(c.data, |x: &T| x.to_f64(), stop, "the colors in float64")?,
         None => Vec::new(),
     };
-    let colors = colors.map(|c| VertexColors {
+    let colors = inputs.colors.map(|c| VertexColors {
         data: &data[..],
         width: c.width,
     });
     // Unread unless a light is positional or the viewer local: no copy then.
-    let positions = if plan.positions {
-        widened(positions, row, stop, "the positions in float64")?
+    let positions = if read_positions {
+        widened(inputs.positions, row, stop, "the positions in float64")?
     } else {
         Vec::new()
     };
-    let normals = widened(normals, row, stop, "the normals in float64")?;
+    let normals = widened(inputs.normals, row, stop, "the normals in float64")?;
     // Zeroed: a large buffer is mapped, not written, before the kernel writes every value.
     let mut result = Zeroed::<f64>::new(out.len(), "the float64 colours")?;
-    run(
-        &prepared,
-        &plan,
-        Isa::detect(),
-        &positions,
-        &normals,
+    let wide = Inputs {
+        positions: &positions,
+        normals: &normals,
         colors,
-        as_uninit(&mut result),
-        stop,
-    )?;
+    };
+    compute(wide, as_uninit(&mut result), stop)?;
+    // Saturated at T's largest value: a finite f64 beyond f32's range stays finite (NaN stays).
+    let max = T::MAX.to_f64();
     for (d, s) in out.chunks_mut(WIDEN_SLAB).zip(result.chunks(WIDEN_SLAB)) {
         stop.check()?;
         for (d, &s) in d.iter_mut().zip(s) {
-            d.write(T::from_f64(s));
+            d.write(T::from_f64(s.clamp(-max, max)));
         }
     }
     Ok(())

@@ -51,27 +51,11 @@ def _brdf(
     return nl[:, None] * radiance * (diffuse + spec)
 
 
-def mesh_frag(
-    positions: Any,
-    normals: Any,
-    scene: gs.gltf.Scene,
-    colors: Any = None,
-    jitter: tuple[np.random.Generator, float] | None = None,
-) -> np.ndarray:
-    """(k, 4) linear RGBA, unclamped, in longdouble: pyrender's colour before its gamma.
-
-    `jitter` (a generator and a relative size ε) first multiplies every coordinate of the
-    positions, normals, camera position and light positions and directions by its own random
-    factor in [1 - ε, 1 + ε]: the model's answer for inputs within ε, whose spread measures how
-    much rounding the inputs to ε can change the colour (the problem's conditioning).
-    """
+def mesh_frag(positions: Any, normals: Any, scene: gs.gltf.Scene, colors: Any = None) -> np.ndarray:
+    """(k, 4) linear RGBA, unclamped, in longdouble: pyrender's colour before its gamma."""
 
     def given(x: Any) -> Any:
-        a = np.asarray(x, dtype=np.float64).astype(L)
-        if jitter is None:
-            return a
-        rng, eps = jitter
-        return a * (1 + L(eps) * rng.uniform(-1, 1, a.shape).astype(L))
+        return np.asarray(x, dtype=np.float64).astype(L)
 
     p = given(positions)
     n = _normalize(given(normals))

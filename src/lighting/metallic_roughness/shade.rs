@@ -11,7 +11,7 @@ use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::ValidScene;
 use crate::lighting::metallic_roughness::kernel::Kernel;
 use crate::lighting::prepare::ColorClamp;
-use crate::lighting::shade::{as_uninit, check_rows, run_shader, Inputs};
+use crate::lighting::shade::{as_uninit, check_rows, in_float64, run_shader, Inputs};
 use crate::numbers::real::{block_lanes, Real};
 use crate::simd::dispatch::Isa;
 
@@ -40,7 +40,8 @@ pub struct Options {
 }
 
 /// Lights `positions` with `normals` (both (n, 3), world coordinates unless `options.model`)
-/// under `scene`, writing n linear RGBA rows into `out` (4n values), computed in `T`.
+/// under `scene`, writing n linear RGBA rows into `out` (4n values), computed in `f64` (`f32`
+/// arrays are widened, and the result rounded once).
 ///
 /// Normals are normalised; a vertex colour (RGB or RGBA) multiplies the result, alpha
 /// included, as pyrender's `color_multiplier` does. A vertex whose normal or colour is not
@@ -86,29 +87,45 @@ pub fn shade_uninit<T: Real>(
     stop: &Stop,
 ) -> Result<(), Error> {
     check_rows(positions, normals, colors, 1, out.len())?;
-    let kernel = Kernel::<T>::new(scene, options)?;
     let inputs = Inputs {
         positions,
         normals,
         colors,
     };
-    run_shader(&kernel, Isa::detect(), inputs, out, stop)
+    // float32 arithmetic errs up to 3.3e-5 where the model is ill-conditioned (|n·v| near its
+    // 0.001 floor, the highlight of roughness 0.04): f32 arrays are computed in f64.
+    if std::mem::size_of::<T>() == 8 {
+        let kernel = Kernel::<T>::new(scene, options)?;
+        return run_shader(&kernel, Isa::detect(), inputs, out, stop);
+    }
+    let kernel = Kernel::<f64>::new(scene, options)?;
+    in_float64(
+        inputs,
+        kernel.plan().positions,
+        out,
+        stop,
+        |wide, dst, stop| run_shader(&kernel, Isa::detect(), wide, dst, stop),
+    )
 }
 
-/// One line saying what [`shade`] computes for `scene` in `T`: the arithmetic, the instruction
-/// set and the plan.
+/// One line saying what [`shade`] computes for `scene` with arrays of `T`: the arithmetic, the
+/// instruction set and the plan.
 ///
 /// # Errors
 /// As [`shade`] for an invalid `model`.
 pub fn describe<T: Real>(scene: &ValidScene, options: &Options) -> Result<String, Error> {
-    let kernel = Kernel::<T>::new(scene, options)?;
+    let kernel = Kernel::<f64>::new(scene, options)?;
     let isa = Isa::detect();
+    let arrays = if std::mem::size_of::<T>() == 8 {
+        ""
+    } else {
+        " (float32 arrays widened)"
+    };
     Ok(format!(
-        "metallic-roughness (pyrender's mesh.frag): float{} arithmetic, {}, {} vertices per \
-         block; {}",
-        8 * std::mem::size_of::<T>(),
+        "metallic-roughness (pyrender's mesh.frag): float64 arithmetic{arrays}, {}, {} vertices \
+         per block; {}",
         isa.name(),
-        block_lanes::<T>(isa),
+        block_lanes::<f64>(isa),
         kernel.plan()
     ))
 }
