@@ -1,15 +1,16 @@
 //! The metallic-roughness model over a block of vertices: pyrender's `main()` for a
-//! `USE_METALLIC_MATERIAL` shader without textures,
+//! `USE_METALLIC_MATERIAL` shader with at most a base colour texture,
 //!
 //! ```text
 //! c = Σ_i nl·radiance_i·f_i + base·ambient + emissive,   then c·colour, alpha = base.a·colour.a
 //! ```
 //!
 //! radiance_i is colour × intensity, over d² for point lights and times the cone factor
-//! clamp(cos θ·scale + offset, 0, 1)² for spots. Each light's weight nl·radiance·f is saturated
-//! like the GL kernel's (at [`Float::SATURATION`] and the sum at `MAX`), so a light at the
-//! vertex itself (d = 0, whose direction is taken as zero: nl at its floor 0.001) gives a
-//! large finite colour, never inf or NaN.
+//! clamp(cos θ·scale + offset, 0, 1)² for spots. Per-vertex colours either multiply the result
+//! (pyrender's `COLOR_0`) or the base colour (a texture's texels: [`ColorRole`]). Each light's
+//! weight nl·radiance·f is saturated like the GL kernel's (at [`Float::SATURATION`] and the sum
+//! at `MAX`), so a light at the vertex itself (d = 0, whose direction is taken as zero: nl at
+//! its floor 0.001) gives a large finite colour, never inf or NaN.
 
 use glam::DMat4;
 
