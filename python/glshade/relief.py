@@ -168,8 +168,8 @@ class LightSource:
 
         Parameters
         ----------
-        rgb : (..., 3) array-like
-            Colours in [0, 1].
+        rgb : (..., 3) or (..., 4) array-like
+            Colours in [0, 1]; of RGBA, the RGB.
         intensity : (..., 1) or (...) array-like
             Intensities in [0, 1]; 0.5 changes nothing.
         hsv_max_sat : float, optional
@@ -195,7 +195,8 @@ class LightSource:
                 ("hsv_max_sat", hsv_max_sat, self.hsv_max_sat),
             )
         )
-        return self._blend(rgb, intensity, "hsv", hsv)
+        # matplotlib reads the first three channels (an RGBA image's colour) and returns RGB.
+        return self._blend(np.asarray(rgb)[..., :3], intensity, "hsv", hsv)
 
     def blend_soft_light(self, rgb: ArrayLike, intensity: ArrayLike) -> NDArray[np.float64]:
         """Soft light ("pegtop"): ``2 i c + (1 - 2 i) c**2``.
@@ -265,7 +266,7 @@ class LightSource:
         mode = one_of(blend_mode, "blend_mode", ("hsv", "soft", "overlay"))
         intensity = self.hillshade(elevation, vert_exag, dx, dy, fraction)
         if mode == "hsv":
-            return self.blend_hsv(np.asarray(rgb)[..., :3], intensity, **kwargs)
+            return self.blend_hsv(rgb, intensity, **kwargs)
         if kwargs:
             raise TypeError(f"the {mode} blend takes no further arguments, got {sorted(kwargs)}")
         if mode == "soft":

@@ -69,6 +69,9 @@ def test_blends(mode: str) -> None:
     theirs = getattr(theirs_ls, name)(rgb, intensity)
     ours = getattr(ours_ls, name)(rgb, intensity)
     np.testing.assert_allclose(ours, theirs, rtol=0, atol=TOL)
+    rgba = np.dstack([rgb, rng.uniform(0, 1, rgb.shape[:2])])  # an RGBA image too
+    theirs = getattr(theirs_ls, name)(rgba, intensity)
+    np.testing.assert_allclose(getattr(ours_ls, name)(rgba, intensity), theirs, rtol=0, atol=TOL)
 
 
 @pytest.mark.parametrize("mode", ["hsv", "soft", "overlay"])
