@@ -13,6 +13,7 @@ from . import glsl, gltf, meshes, presets, relief
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
+from ._explain import Explanation, explain
 from ._glshade import __version__
 from ._image import Image
 from ._intake import ColorRangeWarning
@@ -30,6 +31,7 @@ __all__ = [
     "Camera",
     "ColorRangeWarning",
     "Comparison",
+    "Explanation",
     "Image",
     "Light",
     "Lights",
@@ -40,6 +42,7 @@ __all__ = [
     "compare",
     "crease_normals",
     "disc_light",
+    "explain",
     "face_normals",
     "glsl",
     "gltf",
