@@ -24,6 +24,7 @@ from conftest import require
 import glshade as gs
 from support import glpeers  # first: it sets PYOPENGL_PLATFORM=egl before OpenGL is imported
 from support.pyrender_rays import HEIGHT, WIDTH, YFOV, ZFAR, ZNEAR, interior_of
+from support.render_cases import on_edges
 
 pytestmark = pytest.mark.gl
 
@@ -47,14 +48,6 @@ def sheet(k: int = 24) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 def image(seed: int, shape: tuple[int, int] = (6, 8)) -> np.ndarray:
     return np.random.default_rng(seed).integers(0, 256, (*shape, 4), dtype=np.uint8)
-
-
-def silhouette(covered: np.ndarray) -> np.ndarray:
-    padded = np.pad(covered, 1, mode="edge")
-    h, w = covered.shape
-    around = [padded[1 + a : 1 + a + h, 1 + b : 1 + b + w] for a in (-1, 0, 1) for b in (-1, 0, 1)]
-    result: np.ndarray = np.any([x != covered for x in around], axis=0)
-    return result
 
 
 VERTEX = """
@@ -132,7 +125,7 @@ def test_sampling_matches_moderngl(texture_filter: str, wrap: str) -> None:
         texture_filter=texture_filter, texture_wrap=wrap,
     )  # fmt: skip
     covered = (ours[..., 3] > 0) & (theirs[..., 3] > 0)
-    compared = covered & ~silhouette(ours[..., 3] > 0)
+    compared = covered & ~on_edges(ours[..., 3] > 0)
     assert compared.sum() > 3000
     if texture_filter == "nearest":
         # The coordinates glshade interpolates at each pixel, in texels.
