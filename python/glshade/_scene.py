@@ -123,6 +123,13 @@ class Lights:
         ``GL_SPOT_CUTOFF`` in degrees: in [0, 90], or 180 for no spot.
     ambient : (3,), (4,), (L, 3) or (L, 4) float, default: (0.0, 0.0, 0.0, 1.0)
         ``GL_AMBIENT``, as `diffuse`.
+    spot_inner_cutoff : float or (L,) float, default: 180.0
+        A soft spot edge (not GL's): the inner cone in degrees, in [0, `spot_cutoff`]; the spot
+        factor is scaled by ``clamp((cos t - cos spot_cutoff) / (cos inner - cos spot_cutoff),
+        0, 1)``, learnopengl's ``cutOff``. 180 (or `spot_cutoff` itself) is GL's hard edge.
+    range : float or (L,) float, default: inf
+        A positional light adds nothing, not even its ambient term, at a distance beyond
+        `range` (> 0): Direct3D 11's ``Range`` in Luna's ``LightHelper.hlsl``; inf is GL.
     count : int, optional
         The number of lights when every parameter is a single value; None (the default) makes
         it 1, or the length of the parameters' leading axis.
@@ -164,6 +171,8 @@ class Lights:
     constant_attenuation: Any
     linear_attenuation: Any
     quadratic_attenuation: Any
+    spot_inner_cutoff: Any
+    range: Any
 
     def __init__(
         self,
@@ -177,6 +186,8 @@ class Lights:
         spot_exponent: ArrayLike = _LIGHT["spot_exponent"],
         spot_cutoff: ArrayLike = _LIGHT["spot_cutoff"],
         ambient: ArrayLike = _LIGHT["ambient"],
+        spot_inner_cutoff: ArrayLike = _LIGHT["spot_inner_cutoff"],
+        range: ArrayLike = _LIGHT["range"],
         *,
         count: int | None = None,
     ) -> None:
@@ -303,6 +314,13 @@ class Light(Lights):
         ``GL_SPOT_CUTOFF`` in degrees: in [0, 90], or 180 for no spot.
     ambient : (3,) or (4,) float, default: (0.0, 0.0, 0.0, 1.0)
         ``GL_AMBIENT``, as `diffuse`.
+    spot_inner_cutoff : float, default: 180.0
+        A soft spot edge (not GL's): the inner cone in degrees, in [0, `spot_cutoff`]; the spot
+        factor ramps linearly in the cosine from 0 at `spot_cutoff` to 1 there (learnopengl's
+        ``cutOff``). 180 (or `spot_cutoff` itself) is GL's hard edge.
+    range : float, default: inf
+        A positional light adds nothing, not even its ambient term, beyond this distance
+        (> 0): Luna's Direct3D 11 ``Range``. inf is GL.
 
     Raises
     ------
@@ -339,6 +357,8 @@ class Light(Lights):
         spot_exponent: float = _LIGHT["spot_exponent"],
         spot_cutoff: float = _LIGHT["spot_cutoff"],
         ambient: ArrayLike = _LIGHT["ambient"],
+        spot_inner_cutoff: float = _LIGHT["spot_inner_cutoff"],
+        range: float = _LIGHT["range"],
     ) -> None:
         given = locals()
         parameters = _light_parameters(given, single=True)

@@ -29,6 +29,13 @@ pub struct Light {
     pub linear_attenuation: f64,
     /// `GL_QUADRATIC_ATTENUATION`, k2 ≥ 0.
     pub quadratic_attenuation: f64,
+    /// The inner cone of a soft spot edge in degrees, in [0, `spot_cutoff`], or 180 for GL's
+    /// hard edge: the spot factor is scaled by clamp((cos θ − cos c_rli)/(cos inner − cos
+    /// c_rli), 0, 1) (learnopengl's `cutOff`, three.js' `angle·(1 − penumbra)`).
+    pub spot_inner_cutoff: f64,
+    /// The distance beyond which a positional light adds nothing, not even its ambient term
+    /// (Direct3D 11's `Range` in Luna's `LightHelper.hlsl`), > 0 or +inf (none, GL).
+    pub range: f64,
 }
 
 impl Default for Light {
@@ -46,6 +53,8 @@ impl Default for Light {
             constant_attenuation: 1.0,
             linear_attenuation: 0.0,
             quadratic_attenuation: 0.0,
+            spot_inner_cutoff: 180.0,
+            range: f64::INFINITY,
         }
     }
 }
@@ -53,7 +62,7 @@ impl Default for Light {
 /// The columns of one row of a light table, in order, with their widths: what
 /// [`Light::from_row`] reads (a test checks their sum against [`LIGHT_ROW_LEN`]).
 #[cfg(test)]
-const LIGHT_LAYOUT: [(&str, usize); 10] = [
+const LIGHT_LAYOUT: [(&str, usize); 12] = [
     ("position", 4),
     ("ambient", 4),
     ("diffuse", 4),
@@ -64,12 +73,14 @@ const LIGHT_LAYOUT: [(&str, usize); 10] = [
     ("constant_attenuation", 1),
     ("linear_attenuation", 1),
     ("quadratic_attenuation", 1),
+    ("spot_inner_cutoff", 1),
+    ("range", 1),
 ];
 
 /// The number of `f64` in one row of a light table: position, ambient, diffuse and specular
 /// (4 each), spot_direction (3), spot_exponent, spot_cutoff and the constant, linear and
-/// quadratic attenuation (1 each), in that order.
-pub const LIGHT_ROW_LEN: usize = 24;
+/// quadratic attenuation, spot_inner_cutoff and range (1 each), in that order.
+pub const LIGHT_ROW_LEN: usize = 26;
 
 fn take<const K: usize>(row: &[f64], at: &mut usize) -> [f64; K] {
     let mut v = [0.0; K];
@@ -89,8 +100,8 @@ impl Light {
         let diffuse = take::<4>(row, at);
         let specular = take::<4>(row, at);
         let spot_direction = take::<3>(row, at);
-        let [spot_exponent, spot_cutoff, constant_attenuation, linear_attenuation, quadratic_attenuation] =
-            take::<5>(row, at);
+        let [spot_exponent, spot_cutoff, constant_attenuation, linear_attenuation, quadratic_attenuation, spot_inner_cutoff, range] =
+            take::<7>(row, at);
         Self {
             position,
             ambient,
@@ -102,6 +113,8 @@ impl Light {
             constant_attenuation,
             linear_attenuation,
             quadratic_attenuation,
+            spot_inner_cutoff,
+            range,
         }
     }
 
@@ -115,12 +128,23 @@ impl Light {
         self.spot_cutoff != 180.0
     }
 
+    /// True when a spot light's edge is soft (`spot_inner_cutoff < spot_cutoff`).
+    pub fn has_soft_edge(&self) -> bool {
+        self.is_spot() && self.spot_inner_cutoff < self.spot_cutoff
+    }
+
+    /// True when a positional light has a finite `range`.
+    pub fn has_range(&self) -> bool {
+        !self.is_directional() && self.range != f64::INFINITY
+    }
+
     /// Checks GL's parameter ranges (§2.14.2) and the cases glshade rejects because GL leaves
     /// them undefined; `index` names the light in the message.
     ///
     /// # Errors
-    /// A value error when a parameter is not finite; when `spot_cutoff` is outside
-    /// [0, 90] ∪ {180}; when `spot_exponent` or an attenuation is negative; when `position` is
+    /// A value error when a parameter is not finite (`range` may be +inf); when `spot_cutoff`
+    /// or `spot_inner_cutoff` is outside [0, 90] ∪ {180}, or the inner cone is wider than the
+    /// outer one; when `range` is not > 0; when `spot_exponent` or an attenuation is negative; when `position` is
     /// (0, 0, 0, 0); when a positional light has all three attenuations zero; or when a spot light
     /// has a zero `spot_direction`.
     pub fn validate(&self, index: usize) -> Result<(), Error> {
@@ -155,6 +179,24 @@ impl Light {
         let c = self.spot_cutoff;
         if !((0.0..=90.0).contains(&c) || c == 180.0) {
             return bad("spot_cutoff", "in [0, 90] or exactly 180", format!("{c}"));
+        }
+        let inner = self.spot_inner_cutoff;
+        if !((0.0..=90.0).contains(&inner) || inner == 180.0) {
+            return bad(
+                "spot_inner_cutoff",
+                "in [0, 90] or exactly 180",
+                format!("{inner}"),
+            );
+        }
+        if inner != 180.0 && inner > c {
+            return bad(
+                "spot_inner_cutoff",
+                &format!("at most spot_cutoff ({c}), or 180 for a hard edge"),
+                format!("{inner}"),
+            );
+        }
+        if self.range.is_nan() || self.range <= 0.0 {
+            return bad("range", "> 0 (or inf: no range)", format!("{}", self.range));
         }
         if self.position == [0.0; 4] {
             return bad(
@@ -206,6 +248,7 @@ mod tests {
         assert_eq!(l.spot_direction, [16.0, 17.0, 18.0]);
         assert_eq!(l.spot_exponent, 19.0);
         assert_eq!(l.quadratic_attenuation, 23.0);
+        assert_eq!((l.spot_inner_cutoff, l.range), (24.0, 25.0));
     }
 
     #[test]
@@ -218,7 +261,29 @@ mod tests {
 
     #[test]
     fn out_of_range_parameters_are_named() {
-        let cases: [(Light, &str); 6] = [
+        let cases: [(Light, &str); 9] = [
+            (
+                Light {
+                    spot_cutoff: 30.0,
+                    spot_inner_cutoff: 40.0,
+                    ..Light::default()
+                },
+                "spot_inner_cutoff of light 2 must be at most spot_cutoff (30)",
+            ),
+            (
+                Light {
+                    spot_inner_cutoff: -1.0,
+                    ..Light::default()
+                },
+                "spot_inner_cutoff",
+            ),
+            (
+                Light {
+                    range: 0.0,
+                    ..Light::default()
+                },
+                "range of light 2 must be > 0",
+            ),
             (
                 Light {
                     spot_cutoff: 95.0,

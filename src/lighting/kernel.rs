@@ -276,6 +276,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 position,
                 attenuation: k,
                 spot,
+                range,
             } => {
                 let (vp, d) = normalize_and_length_fast(V3::splat(position) - p);
                 let att = if flag(S::KNOWN.attenuated, attenuated) {
@@ -284,11 +285,16 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                     V::splat(T::ONE)
                 };
                 let cone = kind != Some(LightKind::Positional { spot: false });
+                let edges = S::KNOWN.edges != Some(false);
                 let w = match spot {
-                    Some(s) if cone => att * spot_factor::<V>(&s, -vp),
+                    Some(s) if cone => att * spot_factor::<V>(&s, -vp, edges),
                     _ => att,
                 };
-                (vp, w)
+                match range {
+                    // Luna's `if (d > L.Range) return;`: nothing at all beyond the range.
+                    Some(r) if edges => (vp, w.or_zero(d.le(V::splat(r)))),
+                    _ => (vp, w),
+                }
             }
         }
     }

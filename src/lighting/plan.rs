@@ -27,6 +27,17 @@ pub struct LightPlan {
     pub attenuated: bool,
     /// What the light is (not a choice of the plan: eq. 2.4 and 2.5 decide it).
     pub kind: LightKind,
+    /// A positional light with a range (Luna's; not GL's).
+    pub range: bool,
+    /// A positional spot light with a soft edge (learnopengl's; not GL's).
+    pub soft_edge: bool,
+}
+
+impl LightPlan {
+    /// The light has a range or a soft spot edge: not a GL light.
+    pub fn edges(self) -> bool {
+        self.range || self.soft_edge
+    }
 }
 
 /// How a light's direction and weight are obtained.
@@ -115,6 +126,11 @@ impl Plan {
                         spot: spot.is_some(),
                     },
                 },
+                range: matches!(light.source, Source::Positional { range: Some(_), .. }),
+                soft_edge: matches!(
+                    light.source,
+                    Source::Positional { spot: Some(s), .. } if s.edge.is_some()
+                ),
             })
             .collect();
         let lit_specular = |light: &LightPlan| light.specular;
@@ -155,6 +171,8 @@ impl Plan {
             specular: true,
             attenuated: matches!(light.kind, LightKind::Positional { .. }),
             kind: light.kind,
+            range: light.range,
+            soft_edge: light.soft_edge,
         };
         let side = SidePlan {
             specular: true,
@@ -210,6 +228,8 @@ impl fmt::Display for Plan {
                 (light.diffuse, "diffuse"),
                 (light.specular, "specular"),
                 (light.attenuated, "attenuation"),
+                (light.soft_edge, "soft edge"),
+                (light.range, "range"),
             ]
             .iter()
             .filter(|(on, _)| *on)

@@ -18,6 +18,16 @@ pub struct Spot<T: Float> {
     pub cos_cutoff: T,
     /// s_rli.
     pub exponent: T,
+    /// The soft edge, or `None` for GL's hard one.
+    pub edge: Option<SoftEdge<T>>,
+}
+
+/// A spot light's soft edge (learnopengl's): the factor ramps linearly in cos θ from 0 at the
+/// cutoff to 1 at the inner cone.
+#[derive(Clone, Copy, Debug)]
+pub struct SoftEdge<T: Float> {
+    /// cos(inner) − cos(c_rli) > 0, learnopengl's ε.
+    pub width: T,
 }
 
 /// The length of a vector that stands for a unit direction times that length: the cosine of
@@ -297,13 +307,22 @@ fn complement_pow<V: Lanes>(c: V, k: u32) -> V {
 }
 
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
-/// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1.
+/// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1; times
+/// clamp((cos θ − cos c_rli)/ε, 0, 1) with a soft edge (`soft`, and the spot has one).
 #[inline(always)]
-pub fn spot_factor<V: ElementaryLanes>(spot: &Spot<V::T>, to_vertex: V3<V>) -> V {
+pub fn spot_factor<V: ElementaryLanes>(spot: &Spot<V::T>, to_vertex: V3<V>, soft: bool) -> V {
     let axis = V3::splat(spot.direction);
     let c = to_vertex.dot(axis).max(V::splat(V::T::ZERO));
     let inside = c.ge(V::splat(spot.cos_cutoff));
-    cos_pow::<V>(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside)
+    let factor = cos_pow::<V>(c, to_vertex, axis, spot.exponent, &Scale::unit()).or_zero(inside);
+    match spot.edge {
+        Some(edge) if soft => {
+            // learnopengl's clamp((theta - outerCutOff) / epsilon, 0.0, 1.0), division included.
+            let ramp = (c - V::splat(spot.cos_cutoff)) / V::splat(edge.width);
+            factor * ramp.clamp(V::T::ZERO, V::T::ONE)
+        }
+        _ => factor,
+    }
 }
 
 #[cfg(test)]

@@ -8,7 +8,7 @@ use crate::errors::error::Error;
 use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, Material};
 use crate::gl::scene::{Scene, Specular, ValidScene};
-use crate::lighting::power::{spot_factor, Halfway, Spot};
+use crate::lighting::power::{spot_factor, Halfway, SoftEdge, Spot};
 use crate::numbers::matrix::scaled_inverse;
 use crate::numbers::real::{normalize_and_length, normalize_or_zero, Real};
 use crate::simd::float::{exponent, ldexp};
@@ -63,6 +63,8 @@ pub enum Source<T: Real> {
         attenuation: [T; 3],
         /// The cone, or `None` for `spot_cutoff == 180`.
         spot: Option<Spot<T>>,
+        /// The distance beyond which the light adds nothing, or `None` for none (GL).
+        range: Option<T>,
     },
 }
 
@@ -374,6 +376,15 @@ fn reads_positions(scene: &Scene) -> bool {
     scene.viewer[3] != 0.0 || scene.lights.iter().any(|l| !l.is_directional())
 }
 
+/// cos of an angle in degrees, exactly 0 at 90 (f64 `cos(π/2)` is 6.1e-17).
+fn cos_degrees(degrees: f64) -> f64 {
+    if degrees == 90.0 {
+        0.0
+    } else {
+        degrees.to_radians().cos()
+    }
+}
+
 fn prepare_light<T: Real>(
     light: &Light,
     index: usize,
@@ -381,16 +392,19 @@ fn prepare_light<T: Real>(
     blinn: bool,
 ) -> Result<PreparedLight<T>, Error> {
     let [x, y, z, _] = light.position;
+    let cos_cutoff = cos_degrees(light.spot_cutoff);
     let spot = light.is_spot().then(|| Spot {
         direction: cast::<T>(normalize_or_zero::<f64>(DVec3::from_array(
             light.spot_direction,
         ))),
-        cos_cutoff: T::from_f64(if light.spot_cutoff == 90.0 {
-            0.0
-        } else {
-            light.spot_cutoff.to_radians().cos()
-        }),
+        cos_cutoff: T::from_f64(cos_cutoff),
         exponent: saturate(light.spot_exponent),
+        edge: light.has_soft_edge().then(|| SoftEdge {
+            // At least the least normal number: a width that rounds to 0 would make 0/0.
+            width: T::from_f64(
+                (cos_degrees(light.spot_inner_cutoff) - cos_cutoff).max(T::MIN_POSITIVE.to_f64()),
+            ),
+        }),
     });
     let source = if light.is_directional() {
         let vp = normalize_or_zero::<f64>(DVec3::new(x, y, z));
@@ -403,7 +417,7 @@ fn prepare_light<T: Real>(
         let vp = cast::<T>(vp);
         let spot = spot.map_or(T::ONE, |s| {
             let to_vertex = -V3::<T::Vector<Scalar>>::splat(vp);
-            spot_factor(&s, to_vertex).lane(0)
+            spot_factor(&s, to_vertex, true).lane(0)
         });
         Source::Directional { vp, halfway, spot }
     } else {
@@ -418,6 +432,7 @@ fn prepare_light<T: Real>(
             position,
             attenuation,
             spot,
+            range: light.has_range().then(|| saturate(light.range)),
         }
     };
     Ok(PreparedLight {
@@ -511,13 +526,48 @@ mod tests {
         };
         assert_eq!(spot.cos_cutoff, 0.0);
         // Perpendicular to the axis: on the edge, inside, 0^0 = 1.
-        assert_eq!(spot_factor(&spot, one([1.0, 0.0, 0.0])).0, [1.0]);
+        assert_eq!(spot_factor(&spot, one([1.0, 0.0, 0.0]), true).0, [1.0]);
         let sharp = Spot {
             exponent: 2.0,
             ..spot
         };
-        assert_eq!(spot_factor(&sharp, one([1.0, 0.0, 0.0])).0, [0.0]);
-        assert_eq!(spot_factor(&sharp, one([0.0, 0.0, -1.0])).0, [1.0]);
+        assert_eq!(spot_factor(&sharp, one([1.0, 0.0, 0.0]), true).0, [0.0]);
+        assert_eq!(spot_factor(&sharp, one([0.0, 0.0, -1.0]), true).0, [1.0]);
+    }
+
+    #[test]
+    fn soft_edge_ramps_linearly_in_the_cosine() {
+        // learnopengl's cutOff 12.5 and outerCutOff 17.5 degrees.
+        let light = Light {
+            position: [0.0, 0.0, 0.0, 1.0],
+            spot_cutoff: 17.5,
+            spot_inner_cutoff: 12.5,
+            range: 2.0,
+            ..Light::default()
+        };
+        let p = prepare_light::<f64>(&light, 0, None, true).unwrap();
+        let Source::Positional {
+            spot: Some(spot),
+            range,
+            ..
+        } = p.source
+        else {
+            panic!("positional spot expected")
+        };
+        assert_eq!(range, Some(2.0));
+        let (inner, outer) = (12.5_f64.to_radians().cos(), 17.5_f64.to_radians().cos());
+        for degrees in [0.0, 12.5, 14.0, 15.0, 17.0, 17.5, 30.0_f64] {
+            let theta = degrees.to_radians();
+            let to_vertex = [theta.sin(), 0.0, -theta.cos()];
+            let got = spot_factor(&spot, V3::<Pack<f64, 1>>::splat(to_vertex), true).0[0];
+            let expected = ((theta.cos() - outer) / (inner - outer)).clamp(0.0, 1.0);
+            assert!(
+                (got - expected).abs() < 1e-12,
+                "{degrees}: {got} {expected}"
+            );
+            let hard = spot_factor(&spot, V3::<Pack<f64, 1>>::splat(to_vertex), false).0[0];
+            assert_eq!(hard, if degrees <= 17.5 { 1.0 } else { 0.0 });
+        }
     }
 
     #[test]

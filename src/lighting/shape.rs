@@ -8,7 +8,7 @@
 //! (`tests::shape` checks it).
 
 use crate::gl::scene::Specular;
-use crate::lighting::plan::{LightKind, Plan};
+use crate::lighting::plan::{LightKind, LightPlan, Plan};
 use crate::lighting::prepare::{Prepared, Viewer};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::{Isa, LaneWork};
@@ -43,6 +43,8 @@ pub struct Known {
     pub separate_specular: Option<bool>,
     /// At most [`crate::simd::float::Float::SUM_BLOCK`] lights, summed in the kernel's type.
     pub few_lights: Option<bool>,
+    /// Some light has a range or a soft spot edge (learnopengl's, Luna's: not GL's).
+    pub edges: Option<bool>,
 }
 
 impl Known {
@@ -61,6 +63,7 @@ impl Known {
         gate: None,
         separate_specular: None,
         few_lights: None,
+        edges: None,
     };
 
     /// GL's common case: one side, no modelview, no vertex colours, Blinn-Phong with the
@@ -74,6 +77,7 @@ impl Known {
         specular: Some(Specular::Blinn),
         gate: Some(true),
         separate_specular: Some(false),
+        edges: Some(false),
         ..Known::NOTHING
     };
 }
@@ -115,6 +119,10 @@ pub fn fits<T: Real>(known: &Known, plan: &Plan, prepared: &Prepared<T>) -> bool
         && same(known.gate, prepared.specular_gate)
         && same(known.separate_specular, prepared.separate_specular)
         && same(known.few_lights, prepared.lights.len() <= T::SUM_BLOCK)
+        && same(
+            known.edges,
+            plan.lights.iter().copied().any(LightPlan::edges),
+        )
 }
 
 /// A shape of scene: the flags it fixes, and the instruction sets its kernel is compiled for.

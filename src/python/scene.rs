@@ -18,7 +18,7 @@ use crate::gl::scene::{Scene as GlScene, Specular, ValidScene};
 type Widths = &'static [usize];
 
 /// The parameters of a light, in the order of `glshade.Light`'s signature, with their widths.
-const LIGHT_PARAMETERS: [(&str, Widths); 10] = [
+const LIGHT_PARAMETERS: [(&str, Widths); 12] = [
     ("position", &[4]),
     ("diffuse", &[3, 4]),
     ("specular", &[3, 4]),
@@ -29,6 +29,8 @@ const LIGHT_PARAMETERS: [(&str, Widths); 10] = [
     ("spot_exponent", &[]),
     ("spot_cutoff", &[]),
     ("ambient", &[3, 4]),
+    ("spot_inner_cutoff", &[]),
+    ("range", &[]),
 ];
 
 /// The parameters of a material, in the order of `glshade.Material`'s signature.
@@ -56,6 +58,8 @@ fn light_field<'a>(light: &'a mut Light, name: &str) -> &'a mut [f64] {
         "quadratic_attenuation" => std::slice::from_mut(&mut light.quadratic_attenuation),
         "spot_exponent" => std::slice::from_mut(&mut light.spot_exponent),
         "spot_cutoff" => std::slice::from_mut(&mut light.spot_cutoff),
+        "spot_inner_cutoff" => std::slice::from_mut(&mut light.spot_inner_cutoff),
+        "range" => std::slice::from_mut(&mut light.range),
         _ => unreachable!("not a light parameter: {name}"),
     }
 }

@@ -196,6 +196,31 @@ fn a_shape_fits_only_scenes_with_every_flag_it_fixes() {
             plain,
         ),
         (
+            "a range",
+            Scene {
+                lights: vec![Light {
+                    position: [1.0, 2.0, 1.0, 1.0],
+                    range: 3.0,
+                    ..Light::default()
+                }],
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
+            "a soft spot edge",
+            Scene {
+                lights: vec![Light {
+                    position: [1.0, 2.0, 1.0, 1.0],
+                    spot_cutoff: 40.0,
+                    spot_inner_cutoff: 30.0,
+                    ..Light::default()
+                }],
+                ..base.clone()
+            },
+            plain,
+        ),
+        (
             "no gate",
             Scene {
                 specular_gate: false,

@@ -13,7 +13,7 @@ use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::plan::Plan;
+use crate::lighting::plan::{LightPlan, Plan};
 use crate::lighting::prepare::{Prepared, ShadeOptions};
 use crate::lighting::shade::{as_uninit, run};
 use crate::numbers::real::Real;
@@ -55,7 +55,13 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
             },
             if on(3) { 60.0 } else { 180.0 },
         );
-        for position in [[1.0, 2.0, 1.0, 1.0], [0.25, -0.5, 1.5, 0.5]] {
+        // The second light has learnopengl's soft edge and Luna's range where the spot and
+        // the attenuation are on together (both cut vertices of `vertices`).
+        let edges = on(2) && on(3);
+        for (i, position) in [[1.0, 2.0, 1.0, 1.0], [0.25, -0.5, 1.5, 0.5]]
+            .into_iter()
+            .enumerate()
+        {
             lights.push(Light {
                 position,
                 ambient,
@@ -65,6 +71,8 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
                 spot_cutoff: cutoff,
                 spot_direction: [-0.5, -1.0, -0.5],
                 spot_exponent: 3.0,
+                spot_inner_cutoff: if edges && i == 1 { 30.0 } else { 180.0 },
+                range: if edges && i == 1 { 4.0 } else { f64::INFINITY },
                 ..Light::default()
             });
         }
@@ -194,6 +202,7 @@ fn the_subsets_reach_every_plan_flag() {
         .collect();
     let both = |f: &dyn Fn(&Plan) -> bool| plans.iter().any(f) && !plans.iter().all(f);
     assert!(both(&|p| p.positions));
+    assert!(both(&|p| p.lights.iter().copied().any(LightPlan::edges)));
     assert!(both(&|p| p.unit_normal));
     assert!(both(&|p| p.normal_length));
     assert!(both(&|p| p.view));

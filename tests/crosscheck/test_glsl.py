@@ -74,7 +74,9 @@ def feature_scene(bits: int) -> RefScene:
         )
     if on(1):
         k = (0.5, 0.3, 0.2) if on(2) else (1.0, 0.0, 0.0)
-        for position in ((1.0, 2.0, 1.0, 1.0), (0.25, -0.5, 1.5, 0.5)):
+        # The second light has a soft edge and a range where spot and attenuation are both on.
+        edges = on(2) and on(3)
+        for i, position in enumerate(((1.0, 2.0, 1.0, 1.0), (0.25, -0.5, 1.5, 0.5))):
             lights.append(
                 {
                     "position": position,
@@ -85,6 +87,8 @@ def feature_scene(bits: int) -> RefScene:
                     "spot_cutoff": 60.0 if on(3) else 180.0,
                     "spot_direction": (-0.5, -1.0, -0.5),
                     "spot_exponent": 3.0,
+                    "spot_inner_cutoff": 30.0 if edges and i == 1 else 180.0,
+                    "range": 4.0 if edges and i == 1 else np.inf,
                 }
             )
     material = {
@@ -154,6 +158,14 @@ def programs() -> list[tuple[int, ...]]:
             covered |= held[source]
         elif new:
             heapq.heappush(heap, (-new, first, source))
+    # Then, for any pair of features not yet seen in all four combinations, a program that has it.
+    by_bits = {bits: source for source, group in subsets.items() for bits in group}
+    for j, k in itertools.combinations(range(FEATURES), 2):
+        for want in itertools.product((0, 1), repeat=2):
+            seen = {(b >> j & 1, b >> k & 1) for group in chosen for b in group}
+            if want not in seen:
+                bits = next(b for b in by_bits if (b >> j & 1, b >> k & 1) == want)
+                chosen.append(tuple(subsets[by_bits[bits]]))
     return chosen
 
 
@@ -181,7 +193,8 @@ def test_the_programs_cover_every_pair_of_features_and_every_plan_flag() -> None
         ref = feature_scene(bits)
         line = to_glshade(ref).plan(**options(ref))
         for token in ("positions and normals", "n̂", "ln|n|", "VP_e per vertex", "ĥ constant",
-                      "positional spot", "attenuation", "specular", "ambient"):  # fmt: skip
+                      "positional spot", "attenuation", "specular", "ambient",
+                      "soft edge", "range"):  # fmt: skip
             tokens.setdefault(token, set()).add(token in line)
     assert all(both == {True, False} for both in tokens.values()), tokens
 
@@ -231,7 +244,7 @@ def test_source_follows_the_plan() -> None:
         scene = to_glshade(ref)
         line = scene.plan(**options(ref))
         shaders = gs.glsl.compute_shader(scene, **options(ref))
-        planned = dict(re.findall(r"light (\d+) [^:]*: ([a-z+]+)", line))
+        planned = dict(re.findall(r"light (\d+) [^:]*: ([a-z+ ]+)", line))
         described = {}
         for group in re.findall(
             r"// gs_light\d+: lights ([\d, ]+), \w+: ([a-z +]+)", shaders.compute or ""

@@ -28,9 +28,10 @@ SEEDS = 100
 VERTICES = 1000
 
 
-def check_case(seed: int, n: int, dtype: type) -> int:
-    """Shades one random case, asserts the bound; returns the number of vertices compared."""
-    case = random_case(seed, n, dtype)
+def check_case(seed: int, n: int, dtype: type, edges: bool = False) -> int:
+    """Shades one random case (with soft spot edges and ranges: `edges`), asserts the bound;
+    returns the number of vertices compared."""
+    case = random_case(seed, n, dtype, edges)
     got = gs.shade(case.positions, case.normals, case.scene, **case.kwargs)
     assert got.dtype == dtype
     ref = gl_lighting(case.positions, case.normals, case.ref)
@@ -56,6 +57,13 @@ def check_case(seed: int, n: int, dtype: type) -> int:
 def test_random_scenes_agree_with_the_spec(dtype: type) -> None:
     compared = sum(check_case(seed, VERTICES, dtype) for seed in range(SEEDS))
     assert compared >= 99_000, "at least 10^5 vertex-scene pairs, less the discontinuity bands"
+
+
+@pytest.mark.parametrize("dtype", [np.float64, np.float32], ids=["f64", "f32"])
+def test_soft_spot_edges_and_ranges_agree_with_the_transcription(dtype: type) -> None:
+    # learnopengl's soft edge and Luna's range on random positional lights (add_edges).
+    compared = sum(check_case(seed, VERTICES, dtype, edges=True) for seed in range(40))
+    assert compared >= 38_000
 
 
 def test_random_scenes_cover_every_feature() -> None:

@@ -168,6 +168,8 @@ def _private_names(expression: str) -> list[str]:
 def _value(expression: str, module: str | None) -> tuple[bool, Any]:
     """(True, value) of a literal, or of an expression evaluated in `module`; (False, text) for
     anything else (a docstring's words, an expression that does not evaluate)."""
+    if expression in ("inf", "-inf"):  # how numpy and the reference print an infinite default
+        return True, float(expression)
     try:
         return True, ast.literal_eval(expression)
     except (ValueError, SyntaxError, TypeError, MemoryError, RecursionError):

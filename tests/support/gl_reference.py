@@ -174,6 +174,16 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
                 c = np.maximum(dot(-VP, sdl), 0.0)  # P_pli V (.) s_dli
                 spot = np.where(c >= cos_c, c ** L["spot_exponent"], 0.0)
                 margin = np.minimum(margin, np.abs(dot(-VP, sdl) - cos_c))
+                inner = L.get("spot_inner_cutoff", 180.0)
+                if Ppl[3] != 0 and inner < L["spot_cutoff"]:
+                    # Not GL: learnopengl's clamp((theta - outerCutOff) / epsilon, 0.0, 1.0).
+                    epsilon = np.cos(np.radians(inner)) - cos_c
+                    spot = spot * np.clip((c - cos_c) / epsilon, 0.0, 1.0)
+                    margin = np.minimum(margin, np.abs(c - np.cos(np.radians(inner))))
+            if Ppl[3] != 0 and L.get("range", np.inf) != np.inf:
+                # Not GL: Luna's `if (d > L.Range) return;`, the ambient term included.
+                att = np.where(d <= L["range"], att, 0.0)
+                margin = np.minimum(margin, np.abs(d - L["range"]))
             n_dot_vp = dot(n, VP)
             if s.specular_gate:
                 f = (np.maximum(n_dot_vp, 0.0) != 0).astype(np.float64)  # eq. 2.2

@@ -78,8 +78,26 @@ def random_modelview(rng: np.random.Generator) -> np.ndarray:
     return m
 
 
-def random_case(seed: int, n: int, dtype: Any) -> Case:
-    """A scene drawn from `seed` with `n` vertices of `dtype`; each feature is on in some seeds."""
+def add_edges(lights: list[dict[str, Any]], seed: int) -> None:
+    """Gives the positional lights, in place, learnopengl's soft spot edges and Luna's ranges
+    (not GL: Mesa has neither), drawn from their own generator so `seed`'s other draws keep
+    their values."""
+    rng = np.random.default_rng(10**6 + seed)
+    for light in lights:
+        if light["position"][3] == 0:
+            continue
+        if rng.random() < 0.6:
+            light["range"] = float(rng.uniform(0.5, 6.0))
+        if rng.random() < 0.7:
+            outer = float(rng.uniform(5, 90))
+            light["spot_cutoff"] = outer
+            light.setdefault("spot_direction", tuple(rng.normal(size=3)))
+            light["spot_inner_cutoff"] = float(rng.choice([0.0, rng.uniform(0, outer)]))
+
+
+def random_case(seed: int, n: int, dtype: Any, edges: bool = False) -> Case:
+    """A scene drawn from `seed` with `n` vertices of `dtype`; each feature is on in some seeds.
+    With `edges`, positional lights get soft spot edges and ranges too (`add_edges`)."""
     rng = np.random.default_rng(seed)
     lights = [random_light(rng) for _ in range(int(rng.integers(1, 9)))]
     material = random_material(rng)
@@ -115,6 +133,8 @@ def random_case(seed: int, n: int, dtype: Any) -> Case:
         ref.color_material_face = str(rng.choice(FACES))
         ref.colors = rng.uniform(-0.1, 1.0, (n, int(rng.choice([3, 4]))))
     ref.specular_gate = bool(rng.random() < 0.7)  # drawn last: earlier draws keep their values
+    if edges:
+        add_edges(ref.lights, seed)
     positions = positions.astype(dtype)
     normals = normals.astype(dtype)
     if ref.colors is not None:

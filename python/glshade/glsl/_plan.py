@@ -42,6 +42,11 @@ class LightGroup:
         Positional lights whose (k0, k1, k2) is not (1, 0, 0): attenuation is computed.
     spot : bool
         Their cutoff is not 180: the spot cone is computed.
+    soft : bool
+        Positional spot lights with a soft edge (``spot_inner_cutoff < spot_cutoff``): the
+        cone's linear ramp is computed (a directional light's is in its constant spot factor).
+    ranged : bool
+        Positional lights with a finite ``range``: nothing is added beyond it.
     halfway : bool
         The halfway vector is a per-light constant (directional lights, an infinite viewer,
         Blinn's specular), bound as a uniform rather than computed per vertex.
@@ -55,13 +60,15 @@ class LightGroup:
     specular: bool
     attenuated: bool
     spot: bool
+    soft: bool
+    ranged: bool
     halfway: bool
     indices: tuple[int, ...]
 
     @property
     def key(self) -> tuple[bool, ...]:
         return (self.directional, self.ambient, self.diffuse, self.specular, self.attenuated,
-                self.spot, self.halfway)  # fmt: skip
+                self.spot, self.soft, self.ranged, self.halfway)  # fmt: skip
 
 
 @dataclass(frozen=True)
@@ -196,7 +203,10 @@ def make_plan(
         [lights._column(k).reshape(count) for k in ("constant_attenuation",
          "linear_attenuation", "quadratic_attenuation")], axis=1)  # fmt: skip
     attenuated = ~directional & np.any(attenuation != [1.0, 0.0, 0.0], axis=1)
-    spot = lights._column("spot_cutoff").reshape(count) != 180.0
+    cutoff = lights._column("spot_cutoff").reshape(count)
+    spot = cutoff != 180.0
+    soft = ~directional & spot & (lights._column("spot_inner_cutoff").reshape(count) < cutoff)
+    ranged = ~directional & (lights._column("range").reshape(count) != np.inf)
     ambient = _nonzero(lights._column("ambient").reshape(count, 4))
     diffuse = _nonzero(lights._column("diffuse").reshape(count, 4))
     lit = any_specular & _nonzero(lights._column("specular").reshape(count, 4))
@@ -210,7 +220,8 @@ def make_plan(
             continue  # a light that adds nothing has no code
         halfway = bool(directional[i] and infinite_viewer and blinn and lit[i] and any_power)
         key = (bool(directional[i]), bool(ambient[i]), bool(diffuse[i]), bool(lit[i]),
-               bool(attenuated[i]), bool(spot[i]), halfway)  # fmt: skip
+               bool(attenuated[i]), bool(spot[i]), bool(soft[i]), bool(ranged[i]),
+               halfway)  # fmt: skip
         keys.setdefault(key, []).append(i)
     groups = tuple(
         LightGroup(
@@ -220,7 +231,9 @@ def make_plan(
             specular=k[3],
             attenuated=k[4],
             spot=k[5],
-            halfway=k[6],
+            soft=k[6],
+            ranged=k[7],
+            halfway=k[8],
             indices=tuple(ix),
         )
         for k, ix in keys.items()

@@ -36,6 +36,7 @@ _TYPES = {
 _GROUP_TYPES = {
     "vp": "vec3", "halfway": "vec3", "spot": "float", "point": "vec3", "attenuation": "vec3",
     "spot_direction": "vec3", "spot_cos_cutoff": "float", "spot_exponent": "float",
+    "spot_edge_width": "float", "range": "float",
     "ambient": "vec3", "diffuse": "vec3", "specular": "vec3",
 }  # fmt: skip
 _COMMENTS = {
@@ -43,6 +44,8 @@ _COMMENTS = {
     "spot": "spot_i, a constant", "point": "P_pli, eye space", "attenuation": "(k0, k1, k2)",
     "spot_direction": "unit s_dli", "spot_cos_cutoff": "cos(c_rli), exactly 0 at 90 degrees",
     "spot_exponent": "s_rli", "ambient": "a_cli", "diffuse": "d_cli", "specular": "s_cli",
+    "spot_edge_width": "cos(inner) - cos(c_rli), the soft edge's width",
+    "range": "no light beyond this distance",
 }  # fmt: skip
 
 
@@ -75,6 +78,10 @@ def _describe(plan: Plan) -> list[str]:
             terms.append("attenuation")
         if group.spot:
             terms.append("spot cone")
+        if group.soft:
+            terms.append("soft edge")
+        if group.ranged:
+            terms.append("range")
         lights = ", ".join(str(i) for i in group.indices)
         lines.append(f"// gs_light{g}: lights {lights}, {kind}: {' + '.join(terms)}")
     return lines
@@ -90,7 +97,7 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
     u = f"gs_light{g}_"
     k = len(group.indices)
     body = []
-    weighted = group.attenuated or group.spot
+    weighted = group.attenuated or group.spot or group.ranged
     if group.directional:
         body.append(f"vec3 VP = {u}vp[i];")
         if group.spot:
@@ -109,6 +116,16 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
             )
             spot = f"c >= {u}spot_cos_cutoff[i] ? {power} : 0.0"
             body.append(f"w = w * ({spot});" if group.attenuated else f"float w = {spot};")
+            if group.soft:  # learnopengl's clamp((theta - outerCutOff) / epsilon, 0.0, 1.0)
+                ramp = f"(c - {u}spot_cos_cutoff[i]) / {u}spot_edge_width[i]"
+                body.append(f"w = w * clamp({ramp}, 0.0, 1.0);")
+        if group.ranged:  # Luna's `if (d > L.Range) return;`
+            start = (
+                "w = d <= {r} ? w : 0.0;"
+                if group.attenuated or group.spot
+                else ("float w = d <= {r} ? 1.0 : 0.0;")
+            )
+            body.append(start.format(r=f"{u}range[i]"))
     w = "w * " if weighted else ""
     specular = group.specular and side.specular
     if group.diffuse or specular:

@@ -27,15 +27,28 @@ def _pow(x: NDArray[np.float64], e: NDArray[np.float64]) -> NDArray[np.float64]:
     return result
 
 
+def _cos_degrees(degrees: NDArray[np.float64]) -> NDArray[np.float64]:
+    """cos of angles in degrees, exactly 0 at 90."""
+    cosine: NDArray[np.float64] = np.where(degrees == 90.0, 0.0, np.cos(np.radians(degrees)))
+    return cosine
+
+
 def _spot_constants(
     scene: Scene, ix: list[int]
-) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
-    """Unit spot directions, cos(cutoff) (exactly 0 at 90 degrees) and exponents of lights `ix`."""
+) -> tuple[NDArray[np.float64], NDArray[np.float64], NDArray[np.float64], NDArray[np.float64]]:
+    """Unit spot directions, cos(cutoff) (exactly 0 at 90 degrees), exponents and soft-edge
+    widths cos(inner) - cos(cutoff) (inf for a hard edge, whose ramp is then 1) of lights `ix`."""
     lights = scene.lights
     direction = _unit(lights._column("spot_direction").reshape(-1, 3)[ix])
     cutoff = lights._column("spot_cutoff").reshape(-1)[ix]
-    cos_cutoff = np.where(cutoff == 90.0, 0.0, np.cos(np.radians(cutoff)))
-    return direction, cos_cutoff, lights._column("spot_exponent").reshape(-1)[ix]
+    inner = lights._column("spot_inner_cutoff").reshape(-1)[ix]
+    cos_cutoff = _cos_degrees(cutoff)
+    width = np.where(
+        inner < cutoff,
+        np.maximum(_cos_degrees(inner) - cos_cutoff, np.finfo(np.float32).tiny),
+        np.inf,
+    )
+    return direction, cos_cutoff, lights._column("spot_exponent").reshape(-1)[ix], width
 
 
 def _group_values(
@@ -52,9 +65,11 @@ def _group_values(
             values["halfway"] = _unit(vp + viewer_direction)
         if group.spot:
             # eq. 2.5 with P_pli->V = -VP: a per-light constant.
-            direction, cos_cutoff, exponent = _spot_constants(scene, ix)
+            direction, cos_cutoff, exponent, width = _spot_constants(scene, ix)
             c = np.maximum(np.sum(-vp * direction, axis=1), 0.0)
-            values["spot"] = np.where(c >= cos_cutoff, _pow(c, exponent), 0.0)
+            ramp = np.clip((c - cos_cutoff) / width, 0.0, 1.0)
+            ramp = np.where(np.isinf(width), 1.0, ramp)
+            values["spot"] = np.where(c >= cos_cutoff, _pow(c, exponent), 0.0) * ramp
     else:
         values["point"] = position[:, :3] / position[:, 3:]
         if group.attenuated:
@@ -62,10 +77,14 @@ def _group_values(
                 [lights._column(k).reshape(-1)[ix] for k in ("constant_attenuation",
                  "linear_attenuation", "quadratic_attenuation")], axis=1)  # fmt: skip
         if group.spot:
-            direction, cos_cutoff, exponent = _spot_constants(scene, ix)
+            direction, cos_cutoff, exponent, width = _spot_constants(scene, ix)
             values["spot_direction"] = direction
             values["spot_cos_cutoff"] = cos_cutoff
             values["spot_exponent"] = exponent
+            if group.soft:
+                values["spot_edge_width"] = width
+        if group.ranged:
+            values["range"] = lights._column("range").reshape(-1)[ix]
     for term in ("ambient", "diffuse", "specular"):
         if getattr(group, term):
             values[term] = lights._column(term).reshape(-1, 4)[ix, :3]

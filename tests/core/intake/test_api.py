@@ -304,7 +304,7 @@ def test_native_module_rejects_bad_arrays_without_crashing() -> None:
     with pytest.raises(TypeError, match="Scene"):
         _glshade.shade(P, N, SCENE, **tail)
     with pytest.raises(ValueError, match="position must be"):
-        _glshade.Lights([np.zeros(5)] + [np.zeros(())] * 9)
+        _glshade.Lights([np.zeros(5)] + [np.zeros(())] * 11)
     with pytest.raises(TypeError, match="expected 5 parameters"):
         _glshade.Material([np.zeros(4)])
 
