@@ -1,135 +1,17 @@
-"""The lighting models of glshade's source documents, each one call in that model's own terms.
-
-Each function takes the parameters a document names (``l_a``, ``m_d`` and ``p`` for the
-DirectX 11 tutorial; ``ambientStrength``, ``objectColor`` and ``viewPos`` for learnopengl; ``k_a``,
-``I_l`` and ``n`` for the lecture's Phong model) and returns a `Preset`: the `Scene` and the
-`shade` keywords that make glshade compute exactly that model. Nothing here is a new equation:
-each model is GL state (lights, materials, global ambient, viewer, ``specular="phong"``,
-``specular_gate``, ``normalize``, ``modelview``), so it runs in the same kernel as everything else.
-
->>> import numpy as np, glshade as gs
->>> model = gs.presets.learnopengl(light_pos=(1.2, 1.0, 2.0), view_pos=(0.0, 0.0, 3.0))
->>> model.shade(np.zeros((1, 3)), np.array([[0.0, 0.0, 1.0]])).round(4)
-array([[0.8884, 0.4442, 0.2754, 1.    ]])
-"""
+"""The models of glshade's four source documents: GL, DirectX 11, learnopengl, the lecture."""
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
-from types import MappingProxyType
+from collections.abc import Iterable
 from typing import Any, Literal
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from ._intake import colors_checked
-from ._params import color_array, real_array, rgb, scalar, vector3, warn_bytes
-from ._records import ValueRecord
-from ._scene import Light, Lights, Material, Scene
-from ._shade import shade
-from ._shade_mesh import shade_mesh
-from ._typing import FloatArray, Per, Weighting
-
-__all__ = ["Preset", "directx11", "learnopengl", "opengl", "phong_illumination", "pytorch3d"]
-
-_BLACK = (0.0, 0.0, 0.0, 1.0)
-
-
-@dataclass(frozen=True, eq=False)
-class Preset(ValueRecord):
-    """A lighting model as glshade state.
-
-    Presets pickle and deepcopy to equal presets, and compare equal when their scenes are equal
-    and their keywords hold equal values (arrays compared element by element).
-
-    Attributes
-    ----------
-    scene : Scene
-        Lights, material and light model.
-    shade_kwargs : Mapping[str, Any]
-        The `shade` keywords the model needs (``normalize``, ``modelview``), read-only.
-    weighting : {"angle", "area", "uniform"}
-        The vertex normals the model's renderer makes, `shade_mesh`'s default (``"angle"``,
-        trimesh's, unless the model's renderer weighs otherwise).
-    """
-
-    scene: Scene
-    shade_kwargs: Mapping[str, Any] = field(default_factory=dict)
-    weighting: Weighting = "angle"
-
-    def __post_init__(self) -> None:
-        # A read-only view of a private copy: the caller's dict cannot change the preset.
-        object.__setattr__(self, "shade_kwargs", MappingProxyType(dict(self.shade_kwargs)))
-
-    def shade(self, positions: ArrayLike, normals: ArrayLike, **extra: Any) -> FloatArray:
-        """``gs.shade(positions, normals, self.scene, **self.shade_kwargs, **extra)``.
-
-        Parameters
-        ----------
-        positions : (..., 3) array-like
-            As for `shade`.
-        normals : (..., 3) array-like
-            As for `shade`.
-        **extra
-            Further `shade` keywords; they override the preset's `shade_kwargs`.
-
-        Returns
-        -------
-        (..., 4) or (k, ..., 4) ndarray
-            As `shade` returns it.
-        """
-        return shade(positions, normals, self.scene, **{**self.shade_kwargs, **extra})
-
-    def shade_mesh(
-        self,
-        vertices: Any,
-        faces: ArrayLike | None = None,
-        *,
-        per: Per = "vertex",
-        weighting: Weighting | None = None,
-        **extra: Any,
-    ) -> FloatArray:
-        """`shade_mesh` with this model: per vertex (smooth) or per face (flat).
-
-        Parameters
-        ----------
-        vertices : (n, 3) float32 or float64, or a mesh
-            As for `shade_mesh`.
-        faces : (m, 3) int, optional
-            As for `shade_mesh`.
-        per : {"vertex", "face"}
-            As for `shade_mesh`.
-        weighting : str or None
-            ``"angle"``, ``"area"`` or ``"uniform"``, as for `shade_mesh`; None (the default)
-            is the preset's `weighting`.
-        **extra
-            Further `shade` keywords; they override the preset's `shade_kwargs`.
-
-        Returns
-        -------
-        (n, 4) or (m, 4) ndarray, or (k, n, 4) / (k, m, 4) for scenes with several outputs
-            As `shade_mesh` returns it.
-        """
-        kwargs = {**self.shade_kwargs, **extra}
-        weights = self.weighting if weighting is None else weighting
-        return shade_mesh(vertices, faces, scene=self.scene, per=per, weighting=weights, **kwargs)
-
-
-def _one_light(
-    light_vector: ArrayLike | None, light_position: ArrayLike | None, names: tuple[str, str]
-) -> tuple[ArrayLike, float]:
-    """The light's (x, y, z) and GL's w: 0 for a direction towards the light, 1 for a point."""
-    if (light_vector is None) == (light_position is None):
-        given = "both" if light_vector is not None else "neither"
-        raise TypeError(
-            f"give exactly one of {names[0]} (a directional light) and {names[1]} "
-            f"(a point light), got {given}"
-        )
-    if light_vector is not None:
-        return light_vector, 0.0
-    assert light_position is not None
-    return light_position, 1.0
+from .._intake import colors_checked
+from .._params import color_array, real_array, rgb, scalar, vector3, warn_bytes
+from .._scene import Light, Lights, Material, Scene
+from ._preset import BLACK, Preset, model_matrix, one_light
 
 
 def opengl(
@@ -247,7 +129,7 @@ def directx11(
     }
     shininess = scalar(p, "p", minimum=0.0)
     eye = vector3(eye_position, "eye_position")
-    xyz, w = _one_light(light_vector, light_position, ("light_vector", "light_position"))
+    xyz, w = one_light(light_vector, light_position, ("light_vector", "light_position"))
     where = vector3(xyz, "light_vector" if w == 0 else "light_position", nonzero=w == 0)
     with colors_checked():
         light = Light(
@@ -260,35 +142,18 @@ def directx11(
             ambient=colors["m_a"],
             diffuse=colors["m_d"],
             specular=colors["m_s"],
-            emission=_BLACK,
+            emission=BLACK,
             shininess=shininess,
         )
         scene = Scene(
             lights=[light],
             material=material,
-            global_ambient=_BLACK,
+            global_ambient=BLACK,
             viewer=(*eye, 1.0),
             specular="phong",
         )
     warn_bytes(colors, "directx11")
     return Preset(scene, {"normalize": True})
-
-
-def _model_matrix(model: ArrayLike | None) -> FloatArray | None:
-    if model is None:
-        return None
-    m = real_array(model, "model")
-    if m.shape != (4, 4):
-        raise ValueError(f"model must have shape (4, 4), got {m.shape}")
-    if not np.array_equal(m[3], (0.0, 0.0, 0.0, 1.0)):
-        raise ValueError(f"model must be affine (last row (0, 0, 0, 1)), got last row {m[3]}")
-    det = float(np.linalg.det(m[:3, :3]))
-    if det == 0.0 or not np.isfinite(det):
-        raise ValueError(
-            "model must be invertible (its normal matrix is its inverse transpose), "
-            f"got determinant {det:g} for the upper-left 3x3"
-        )
-    return m
 
 
 def learnopengl(
@@ -363,19 +228,19 @@ def learnopengl(
     exponent = scalar(shininess, "shininess", minimum=0.0)
     position = vector3(light_pos, "light_pos")
     viewer = vector3(view_pos, "view_pos")
-    matrix = _model_matrix(model)
+    matrix = model_matrix(model)
     with colors_checked():
         scene = Scene(
             lights=[
                 Light(
                     position=(*position, 1.0),
-                    ambient=_BLACK,
+                    ambient=BLACK,
                     diffuse=light,
                     specular=strength * light,
                 )
             ],
             material=Material(
-                ambient=obj, diffuse=obj, specular=obj, emission=_BLACK, shininess=exponent
+                ambient=obj, diffuse=obj, specular=obj, emission=BLACK, shininess=exponent
             ),
             global_ambient=ambient * light,
             viewer=(*viewer, 1.0),
@@ -499,7 +364,7 @@ def phong_illumination(
             f"I_l must be a number or have shape (3,) or (L, 3), got {intensity.shape}"
         )
     viewer = vector3(viewer_position, "viewer_position")
-    xyz, w = _one_light(light_direction, light_position, ("light_direction", "light_position"))
+    xyz, w = one_light(light_direction, light_position, ("light_direction", "light_position"))
     name = "light_direction" if w == 0 else "light_position"
     where = vector3(xyz, name, rows=True, nonzero=w == 0)
     if intensity.ndim == 2 and (where.ndim != 2 or len(where) != len(intensity)):
@@ -533,7 +398,7 @@ def phong_illumination(
     with colors_checked():
         lights = Lights(
             position=homogeneous,
-            ambient=_BLACK,
+            ambient=BLACK,
             diffuse=intensity,
             specular=intensity,
             constant_attenuation=k0,
@@ -545,7 +410,7 @@ def phong_illumination(
             ambient=(ka, ka, ka),
             diffuse=(kd, kd, kd),
             specular=(ks, ks, ks),
-            emission=_BLACK,
+            emission=BLACK,
             shininess=exponent,
         )
         scene = Scene(
@@ -561,118 +426,3 @@ def phong_illumination(
         colors["I_l"] = intensity
     warn_bytes(colors, "phong_illumination")
     return Preset(scene, {"normalize": True})
-
-
-def pytorch3d(
-    *,
-    location: ArrayLike | None = (0.0, 1.0, 0.0),
-    direction: ArrayLike | None = None,
-    ambient_color: ArrayLike = (0.5, 0.5, 0.5),
-    diffuse_color: ArrayLike = (0.3, 0.3, 0.3),
-    specular_color: ArrayLike = (0.2, 0.2, 0.2),
-    material_ambient_color: ArrayLike = (1.0, 1.0, 1.0),
-    material_diffuse_color: ArrayLike = (1.0, 1.0, 1.0),
-    material_specular_color: ArrayLike = (1.0, 1.0, 1.0),
-    shininess: float = 64.0,
-    camera_position: ArrayLike = (0.0, 0.0, 0.0),
-) -> Preset:
-    """PyTorch3D's Phong shading: its ``PointLights`` or ``DirectionalLights``, ``Materials``
-    and ``phong_shading`` / ``gouraud_shading`` / ``flat_shading``, in world space.
-
-    Read from pytorch3d/renderer/lighting.py (``diffuse``, ``specular``, commit 04d318d8) and
-    pytorch3d/renderer/mesh/shading.py (``_apply_lighting``, the three shadings, commit
-    17ce7d7b)::
-
-        colors = (ambient + diffuse) * texels + specular
-        ambient = material.ambient_color * light.ambient_color
-        diffuse = material.diffuse_color * light.diffuse_color * relu(n . l)
-        specular = material.specular_color * light.specular_color
-                   * (relu(v . r) * (n . l > 0)) ** shininess,   r = -l + 2 (n . l) n
-
-    with n, l = normalize(location - p) (or normalize(direction), towards the light) and
-    v = normalize(camera_position - p), no attenuation and no clamp. In GL's terms: one
-    unattenuated light whose colours are the products of the light's and the material's, a
-    white material whose ambient and diffuse colours the texels (vertex colours) replace
-    (``color_material="ambient_and_diffuse"``, the default with `colors`), no global ambient,
-    a viewer at the camera, ``specular="phong"`` with GL's gate, ``normalize=True`` and
-    ``clamp=False``. `Preset.shade_mesh` weighs vertex normals by area, as PyTorch3D's
-    ``verts_normals`` does, and ``per="face"`` lights each face at its centroid with its face
-    normal, as ``flat_shading`` does.
-
-    Parameters
-    ----------
-    location : (3,) float or None, default: (0.0, 1.0, 0.0)
-        ``PointLights.location`` (its default); None with `direction`.
-    direction : (3,) float, optional
-        ``DirectionalLights.direction``, pointing towards the light; give it with
-        ``location=None``.
-    ambient_color : (3,) float, default: (0.5, 0.5, 0.5)
-        The light's ``ambient_color`` (PyTorch3D's default).
-    diffuse_color : (3,) float, default: (0.3, 0.3, 0.3)
-        The light's ``diffuse_color``.
-    specular_color : (3,) float, default: (0.2, 0.2, 0.2)
-        The light's ``specular_color``.
-    material_ambient_color : (3,) float, default: (1.0, 1.0, 1.0)
-        ``Materials.ambient_color``.
-    material_diffuse_color : (3,) float, default: (1.0, 1.0, 1.0)
-        ``Materials.diffuse_color``.
-    material_specular_color : (3,) float, default: (1.0, 1.0, 1.0)
-        ``Materials.specular_color``.
-    shininess : float, default: 64.0
-        ``Materials.shininess``, > 0. (At 0 PyTorch3D raises its gated zero to the power 0 and
-        adds the whole specular colour behind the light, where GL's gate adds none.)
-    camera_position : (3,) float, default: (0.0, 0.0, 0.0)
-        ``cameras.get_camera_center()``, world space.
-
-    Returns
-    -------
-    Preset
-        The scene, ``normalize=True`` and ``clamp=False``, and area-weighted vertex normals.
-
-    Raises
-    ------
-    TypeError
-        For both or neither of `location` and `direction`, or a colour given by name.
-    ValueError
-        For a wrong shape or a `shininess` that is not positive.
-
-    Notes
-    -----
-    PyTorch3D normalises with ``F.normalize(x, eps=1e-6)``, which divides vectors shorter than
-    1e-6 by 1e-6 instead of their length; glshade normalises them exactly.
-    """
-    light_vector, w = _one_light(direction, location, ("direction", "location"))
-    colors = {
-        name: rgb(value, name)
-        for name, value in (
-            ("ambient_color", ambient_color), ("diffuse_color", diffuse_color),
-            ("specular_color", specular_color), ("material_ambient_color", material_ambient_color),
-            ("material_diffuse_color", material_diffuse_color),
-            ("material_specular_color", material_specular_color),
-        )
-    }  # fmt: skip
-    exponent = scalar(shininess, "shininess", minimum=0.0)
-    if exponent == 0:
-        raise ValueError("shininess must be > 0 (PyTorch3D's specular at 0 is ungated), got 0")
-    where = vector3(light_vector, "direction" if w == 0 else "location", nonzero=w == 0)
-    camera = vector3(camera_position, "camera_position")
-    with colors_checked():
-        scene = Scene(
-            lights=[
-                Light(
-                    position=(*where, w),
-                    ambient=colors["ambient_color"] * colors["material_ambient_color"],
-                    diffuse=colors["diffuse_color"] * colors["material_diffuse_color"],
-                    specular=colors["specular_color"] * colors["material_specular_color"],
-                )
-            ],
-            material=Material(
-                ambient=(1.0, 1.0, 1.0), diffuse=(1.0, 1.0, 1.0), specular=(1.0, 1.0, 1.0),
-                emission=_BLACK, shininess=exponent,
-            ),
-            global_ambient=_BLACK,
-            viewer=(*camera, 1.0),
-            specular="phong",
-        )  # fmt: skip
-    warn_bytes(colors, "pytorch3d")
-    return Preset(scene, {"normalize": True, "clamp": False}, weighting="area")
