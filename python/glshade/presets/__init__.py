@@ -16,5 +16,15 @@ array([[0.8884, 0.4442, 0.2754, 1.    ]])
 from ._documents import directx11, learnopengl, opengl, phong_illumination
 from ._preset import Preset
 from ._pytorch3d import pytorch3d
+from ._shader_lights import directx11_lights, learnopengl_lights
 
-__all__ = ["Preset", "directx11", "learnopengl", "opengl", "phong_illumination", "pytorch3d"]
+__all__ = [
+    "Preset",
+    "directx11",
+    "directx11_lights",
+    "learnopengl",
+    "learnopengl_lights",
+    "opengl",
+    "phong_illumination",
+    "pytorch3d",
+]

@@ -116,18 +116,19 @@ def one_light(
     return light_position, 1.0
 
 
-def model_matrix(model: ArrayLike | None) -> FloatArray | None:
+def model_matrix(model: ArrayLike | None, name: str = "model") -> FloatArray | None:
+    """A model (world) matrix as numpy prints it: (4, 4), affine and invertible; None stays."""
     if model is None:
         return None
-    m = real_array(model, "model")
+    m = real_array(model, name)
     if m.shape != (4, 4):
-        raise ValueError(f"model must have shape (4, 4), got {m.shape}")
+        raise ValueError(f"{name} must have shape (4, 4), got {m.shape}")
     if not np.array_equal(m[3], (0.0, 0.0, 0.0, 1.0)):
-        raise ValueError(f"model must be affine (last row (0, 0, 0, 1)), got last row {m[3]}")
+        raise ValueError(f"{name} must be affine (last row (0, 0, 0, 1)), got last row {m[3]}")
     det = float(np.linalg.det(m[:3, :3]))
     if det == 0.0 or not np.isfinite(det):
         raise ValueError(
-            "model must be invertible (its normal matrix is its inverse transpose), "
+            f"{name} must be invertible (its normal matrix is its inverse transpose), "
             f"got determinant {det:g} for the upper-left 3x3"
         )
     return m
