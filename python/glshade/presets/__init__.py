@@ -14,6 +14,7 @@ array([[0.8884, 0.4442, 0.2754, 1.    ]])
 """
 
 from ._documents import directx11, learnopengl, opengl, phong_illumination
+from ._panda3d import panda3d
 from ._preset import Preset
 from ._pytorch3d import pytorch3d
 from ._shader_lights import directx11_lights, learnopengl_lights
@@ -25,6 +26,7 @@ __all__ = [
     "learnopengl",
     "learnopengl_lights",
     "opengl",
+    "panda3d",
     "phong_illumination",
     "pytorch3d",
 ]

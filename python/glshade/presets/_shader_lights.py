@@ -18,21 +18,18 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from .._intake import colors_checked
-from .._params import rgb, scalar, vector3, warn_bytes
+from .._params import scalar, vector3, warn_bytes
 from .._scene import Light, Material, Scene
-from .._typing import Float64Array
 from ._preset import BLACK, Preset, model_matrix
+from ._structs import Kind, attenuation, colors_of, struct, structs
 
-# What a struct member holds: a colour, a 3-vector, a nonzero direction, or a number.
-_Kind = Literal["rgb", "rgba", "vector", "direction", "number"]
-
-_GLSL_DIR: dict[str, _Kind] = {
+_GLSL_DIR: dict[str, Kind] = {
     "direction": "direction",
     "ambient": "rgb",
     "diffuse": "rgb",
     "specular": "rgb",
 }
-_GLSL_POINT: dict[str, _Kind] = {
+_GLSL_POINT: dict[str, Kind] = {
     "position": "vector",
     "constant": "number",
     "linear": "number",
@@ -41,73 +38,23 @@ _GLSL_POINT: dict[str, _Kind] = {
     "diffuse": "rgb",
     "specular": "rgb",
 }
-_GLSL_SPOT: dict[str, _Kind] = {
+_GLSL_SPOT: dict[str, Kind] = {
     **_GLSL_POINT,
     "direction": "direction",
     "cutOff": "number",
     "outerCutOff": "number",
 }
-_GLSL_MATERIAL: dict[str, _Kind] = {"diffuse": "rgb", "specular": "rgb", "shininess": "number"}
+_GLSL_MATERIAL: dict[str, Kind] = {"diffuse": "rgb", "specular": "rgb", "shininess": "number"}
 
-_HLSL_COLORS: dict[str, _Kind] = {"Ambient": "rgba", "Diffuse": "rgba", "Specular": "rgba"}
-_HLSL_DIR: dict[str, _Kind] = {**_HLSL_COLORS, "Direction": "direction"}
-_HLSL_POINT: dict[str, _Kind] = {
+_HLSL_COLORS: dict[str, Kind] = {"Ambient": "rgba", "Diffuse": "rgba", "Specular": "rgba"}
+_HLSL_DIR: dict[str, Kind] = {**_HLSL_COLORS, "Direction": "direction"}
+_HLSL_POINT: dict[str, Kind] = {
     **_HLSL_COLORS,
     "Position": "vector",
     "Range": "number",
     "Att": "vector",
 }
-_HLSL_SPOT: dict[str, _Kind] = {**_HLSL_POINT, "Direction": "direction", "Spot": "number"}
-
-
-def _struct(value: Any, name: str, members: Mapping[str, _Kind]) -> dict[str, Any]:
-    """`value`'s members checked by kind, each named ``name["member"]`` in errors."""
-    if not isinstance(value, Mapping):
-        raise TypeError(
-            f"{name} must be a mapping of its struct's members ({', '.join(members)}), "
-            f"got {type(value).__name__}"
-        )
-    missing = [m for m in members if m not in value]
-    unknown = [m for m in value if m not in members]
-    if missing or unknown:
-        found = "; ".join(
-            f"{what} {names}"
-            for what, names in (("missing", missing), ("unknown", unknown))
-            if names
-        )
-        raise TypeError(f"{name} must have exactly the members {list(members)}: {found}")
-    out: dict[str, Any] = {}
-    for member, kind in members.items():
-        label = f'{name}["{member}"]'
-        item = value[member]
-        if kind in ("rgb", "rgba"):
-            out[member] = rgb(item, label, alpha=kind == "rgba")
-        elif kind == "number":
-            out[member] = scalar(item, label)
-        else:
-            out[member] = vector3(item, label, nonzero=kind == "direction")
-    return out
-
-
-def _structs(
-    values: Iterable[Any], name: str, members: Mapping[str, _Kind]
-) -> list[dict[str, Any]]:
-    if isinstance(values, Mapping):
-        raise TypeError(f"{name} must be a sequence of structs (mappings), got one mapping")
-    return [_struct(v, f"{name}[{i}]", members) for i, v in enumerate(values)]
-
-
-def _attenuation(k: Float64Array, names: tuple[str, str, str], owner: str) -> Float64Array:
-    """GL's k0, k1, k2: each >= 0 (GL refuses negative ones), not all 0."""
-    if (k < 0).any() or not k.any():
-        given = ", ".join(f"{n}={x:g}" for n, x in zip(names, k, strict=True))
-        raise ValueError(f"{owner}'s {', '.join(names)} must be >= 0, not all 0, got {given}")
-    return k
-
-
-def _colors(structs: list[dict[str, Any]], name: str, members: Iterable[str]) -> dict[str, Any]:
-    """The structs' colours by their user names, for `warn_bytes`."""
-    return {f'{name}[{i}]["{m}"]': s[m] for i, s in enumerate(structs) for m in members}
+_HLSL_SPOT: dict[str, Kind] = {**_HLSL_POINT, "Direction": "direction", "Spot": "number"}
 
 
 def learnopengl_lights(
@@ -193,12 +140,12 @@ def learnopengl_lights(
     if chapter not in ("6", "5.4"):
         raise ValueError(f'chapter must be "6" or "5.4", got {chapter!r}')
     viewer = vector3(view_pos, "view_pos")
-    mat = _struct(material, "material", _GLSL_MATERIAL)
+    mat = struct(material, "material", _GLSL_MATERIAL)
     if mat["shininess"] < 0:
         raise ValueError(f'material["shininess"] must be >= 0, got {mat["shininess"]:g}')
-    dirs = [] if dir_light is None else [_struct(dir_light, "dir_light", _GLSL_DIR)]
-    points = _structs(point_lights, "point_lights", _GLSL_POINT)
-    spots = [] if spot_light is None else [_struct(spot_light, "spot_light", _GLSL_SPOT)]
+    dirs = [] if dir_light is None else [struct(dir_light, "dir_light", _GLSL_DIR)]
+    points = structs(point_lights, "point_lights", _GLSL_POINT)
+    spots = [] if spot_light is None else [struct(spot_light, "spot_light", _GLSL_SPOT)]
     if chapter == "5.4" and (dirs or points):
         raise ValueError(
             "chapter 5.4's shader has one light, spot_light; dir_light and point_lights are "
@@ -227,9 +174,9 @@ def learnopengl_lights(
             specular_gate=False,
         )
     colors = {'material["diffuse"]': mat["diffuse"], 'material["specular"]': mat["specular"]}
-    colors |= _colors(dirs, "dir_light", ("ambient", "diffuse", "specular"))
-    colors |= _colors(points, "point_lights", ("ambient", "diffuse", "specular"))
-    colors |= _colors(spots, "spot_light", ("ambient", "diffuse", "specular"))
+    colors |= colors_of(dirs, "dir_light", ("ambient", "diffuse", "specular"))
+    colors |= colors_of(points, "point_lights", ("ambient", "diffuse", "specular"))
+    colors |= colors_of(spots, "spot_light", ("ambient", "diffuse", "specular"))
     warn_bytes(colors, "learnopengl_lights")
     kwargs: dict[str, Any] = {"normalize": True}
     if matrix is not None:
@@ -243,7 +190,7 @@ def _glsl_colors(light: Mapping[str, Any]) -> dict[str, Any]:
 
 def _glsl_attenuation(light: Mapping[str, Any], name: str) -> dict[str, float]:
     names = ("constant", "linear", "quadratic")
-    k = _attenuation(np.array([light[n] for n in names]), names, name)
+    k = attenuation(np.array([light[n] for n in names]), names, name)
     return {
         "constant_attenuation": float(k[0]),
         "linear_attenuation": float(k[1]),
@@ -368,7 +315,7 @@ def directx11_lights(
     ColorRangeWarning
         For a colour that looks like 0-255 bytes, under its struct's name.
     """
-    mat = _struct(material, "material", {**_HLSL_COLORS, "Specular": "rgba"})
+    mat = struct(material, "material", {**_HLSL_COLORS, "Specular": "rgba"})
     if mat["Specular"].shape != (4,):
         raise ValueError(
             'material["Specular"] must have shape (4,): its w is the specular power, '
@@ -380,9 +327,9 @@ def directx11_lights(
             f'material["Specular"]\'s w, the specular power, must be >= 0, got {power:g}'
         )
     eye = vector3(eye_position, "eye_position")
-    dirs = _structs(dir_lights, "dir_lights", _HLSL_DIR)
-    points = _structs(point_lights, "point_lights", _HLSL_POINT)
-    spots = _structs(spot_lights, "spot_lights", _HLSL_SPOT)
+    dirs = structs(dir_lights, "dir_lights", _HLSL_DIR)
+    points = structs(point_lights, "point_lights", _HLSL_POINT)
+    spots = structs(spot_lights, "spot_lights", _HLSL_SPOT)
     matrix = model_matrix(world, "world")
     with colors_checked():
         lights = [Light(position=(*-d["Direction"], 0.0), **_hlsl_colors(d)) for d in dirs]
@@ -408,8 +355,8 @@ def directx11_lights(
         )
     colors = {f'material["{m}"]': mat[m] for m in ("Ambient", "Diffuse")}
     colors['material["Specular"]'] = mat["Specular"][:3]
-    for structs, name in ((dirs, "dir_lights"), (points, "point_lights"), (spots, "spot_lights")):
-        colors |= _colors(structs, name, _HLSL_COLORS)
+    for found, name in ((dirs, "dir_lights"), (points, "point_lights"), (spots, "spot_lights")):
+        colors |= colors_of(found, name, _HLSL_COLORS)
     warn_bytes(colors, "directx11_lights")
     kwargs: dict[str, Any] = {"normalize": True}
     if matrix is not None:
@@ -424,7 +371,7 @@ def _hlsl_colors(light: Mapping[str, Any]) -> dict[str, Any]:
 def _hlsl_positional(light: Mapping[str, Any], name: str, cone: dict[str, Any]) -> list[Light]:
     """A point light (no `cone`) or spot light: one GL light, or two when GL's attenuation of
     the ambient term would differ from Luna's (none)."""
-    k = _attenuation(light["Att"], ("a0", "a1", "a2"), f'{name}["Att"]')
+    k = attenuation(light["Att"], ("a0", "a1", "a2"), f'{name}["Att"]')
     reach = light["Range"]
     if reach <= 0:
         raise ValueError(f'{name}["Range"] must be > 0, got {reach:g}')
