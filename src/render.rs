@@ -36,6 +36,7 @@ use crate::numbers::real::Real;
 use crate::render::camera::{check_affine, Camera};
 use crate::render::clip::clip_triangle;
 use crate::render::mesh::Mesh;
+use crate::render::passes::Provoking;
 use crate::render::passes::{Frame, Pass};
 use crate::render::raster::{Cull, Triangle, Viewport};
 use crate::render::shader::Shader;
@@ -82,6 +83,8 @@ pub struct RenderOptions {
     pub viewport: Viewport,
     /// Flat, Gouraud or Phong.
     pub shading: Shading,
+    /// Where flat shading lights a face.
+    pub provoking: Provoking,
     /// Face culling.
     pub cull: Cull,
     /// Model to world coordinates (affine).
@@ -108,6 +111,7 @@ impl Default for RenderOptions {
                 height: 512,
             },
             shading: Shading::Phong,
+            provoking: Provoking::Last,
             cull: Cull::None,
             model: DMat4::IDENTITY,
             background: [0.0; 4],
@@ -346,7 +350,7 @@ fn draw<T: Real>(
         background: options.background,
     };
     if options.shading == Shading::Flat {
-        return pass.flat(image, stop);
+        return pass.flat(options.provoking, image, stop);
     }
     let computed;
     let normals = if let Some(n) = mesh.normals {
@@ -501,7 +505,9 @@ mod tests {
         };
         let normals = [[0.0, 0.0, 1.0]; 4];
         let mut image = vec![0.0; 35 * 4];
-        assert!(interrupted(pass.flat(&mut image, &stop).unwrap_err()));
+        assert!(interrupted(
+            pass.flat(Provoking::Last, &mut image, &stop).unwrap_err()
+        ));
         assert!(interrupted(
             pass.gouraud(&normals, &mut image, &stop).unwrap_err()
         ));

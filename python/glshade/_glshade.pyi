@@ -150,6 +150,7 @@ def render(
     width: int,
     height: int,
     shading: str,
+    provoking_vertex: str,
     normals: NDArray[np.floating[Any]] | None,
     colors: NDArray[np.floating[Any]] | None,
     color_material: str | None,

@@ -27,7 +27,7 @@ from ._render_input import render_input
 from ._scene import Scene
 from ._texture import FILTERS, texels, wrap_modes
 from ._transfer import Transfer, apply_transfer, transfer_name
-from ._typing import ColorMaterialMode, Cull, Face, FloatArray, Shading, Space
+from ._typing import ColorMaterialMode, Cull, Face, FloatArray, ProvokingVertex, Shading, Space
 from .gltf import Scene as GltfScene
 
 __all__ = ["render"]
@@ -43,6 +43,7 @@ def render(
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
+    provoking_vertex: ProvokingVertex = ...,
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
@@ -71,6 +72,7 @@ def render(
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
+    provoking_vertex: ProvokingVertex = ...,
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
@@ -99,6 +101,7 @@ def render(
     width: int = ...,
     height: int = ...,
     shading: Shading = ...,
+    provoking_vertex: ProvokingVertex = ...,
     normals: ArrayLike | None = ...,
     colors: ArrayLike | Literal[False] | None = ...,
     color_material: ColorMaterialMode | None = ...,
@@ -126,6 +129,7 @@ def render(
     width: int = 512,
     height: int = 512,
     shading: Shading = "phong",
+    provoking_vertex: ProvokingVertex = "last",
     normals: ArrayLike | None = None,
     colors: ArrayLike | Literal[False] | None = None,
     color_material: ColorMaterialMode | None = None,
@@ -189,9 +193,14 @@ def render(
     shading : {"phong", "gouraud", "flat"}
         Where the equation is evaluated: at every pixel with the interpolated position and
         normal (``"phong"``), at the vertices with the colours interpolated (``"gouraud"``, GL's
-        smooth shading), or once per face with its face normal at its last vertex (``"flat"``,
-        GL's flat shading with the provoking vertex convention). This name and the others
-        below are case-insensitive (``"Phong"``).
+        smooth shading), or once per face with its face normal at its provoking vertex
+        (``"flat"``, GL's flat shading). This name and the others below are case-insensitive
+        (``"Phong"``).
+    provoking_vertex : {"last", "first", "centroid"}, default: "last"
+        Where flat shading lights a face, and whose vertex colour it takes: the last vertex
+        (GL's default, ``GL_LAST_VERTEX_CONVENTION``), the first (Direct3D's, Vulkan's and
+        Metal's, ``GL_FIRST_VERTEX_CONVENTION``), or the face's centroid with the mean of its
+        vertex colours (PyTorch3D's ``flat_shading``; `shade_mesh` with ``per="face"``).
     normals : (n, 3), (m, 3) or (m, 3, 3) float, optional
         One normal per vertex for Phong and Gouraud, one per face for flat shading; or, for
         Phong and Gouraud, one per face corner (`crease_normals`: each face then gets corners
@@ -350,6 +359,9 @@ def render(
         width=w,
         height=h,
         shading=mode,
+        provoking_vertex=one_of(
+            provoking_vertex, "provoking_vertex", ("last", "first", "centroid")
+        ),
         normals=n,
         colors=c,
         color_material=optional_choice(given.color_material, "color_material"),

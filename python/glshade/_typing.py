@@ -33,6 +33,8 @@ Face = Literal["front", "back", "front_and_back"]
 # Where a mesh's colours (or normals) belong.
 Per = Literal["vertex", "face"]
 Shading = Literal["phong", "gouraud", "flat"]
+# Where flat shading lights a face (glProvokingVertex, or the centroid).
+ProvokingVertex = Literal["last", "first", "centroid"]
 # The coordinates lights are given in.
 Space = Literal["eye", "world"]
 Weighting = Literal["angle", "area", "uniform"]

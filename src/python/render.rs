@@ -17,6 +17,7 @@ use crate::lighting::prepare::ColorClamp;
 use crate::numbers::real::Real;
 use crate::render::camera::Camera;
 use crate::render::mesh::{Mesh, Textured};
+use crate::render::passes::Provoking;
 use crate::render::raster::{Cull, Viewport};
 use crate::render::texture::{Filter, Texture, Wrap};
 use crate::render::{render_metallic_roughness, RenderOptions, Shading};
@@ -113,9 +114,9 @@ fn render_typed<'py, T: Element + Real>(
 /// (height, width) depth, of the vertices' dtype.
 #[pyfunction]
 #[pyo3(signature = (
-    vertices, faces, scene, *, view, projection, model, width, height, shading, normals, colors,
-    color_material, color_material_face, normalize, rescale_normal, cull, background, clamp,
-    texture, uv, texture_filter, texture_wrap
+    vertices, faces, scene, *, view, projection, model, width, height, shading, provoking_vertex,
+    normals, colors, color_material, color_material_face, normalize, rescale_normal, cull,
+    background, clamp, texture, uv, texture_filter, texture_wrap
 ))]
 pub fn render<'py>(
     py: Python<'py>,
@@ -128,6 +129,7 @@ pub fn render<'py>(
     width: usize,
     height: usize,
     shading: &str,
+    provoking_vertex: &str,
     normals: Option<&Bound<'py, PyUntypedArray>>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
     color_material: Option<&str>,
@@ -172,6 +174,7 @@ pub fn render<'py>(
     let options = RenderOptions {
         viewport: Viewport { width, height },
         shading: Shading::parse(shading).map_err(to_pyerr)?,
+        provoking: Provoking::parse(provoking_vertex).map_err(to_pyerr)?,
         cull: Cull::parse(cull).map_err(to_pyerr)?,
         model: matrix(&model, "model")?,
         background,

@@ -5,8 +5,8 @@
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
 //!   and all those pixels are lit in one `shade` call.
 //! - **Flat**: each face is lit once with its face normal, at its provoking vertex (the last
-//!   one, GL's default), and the colour is constant over the face (`glShadeModel(GL_FLAT)`;
-//!   a `flat` varying in GLSL).
+//!   one, GL's default; the first, Direct3D's; or the centroid, PyTorch3D's), and the colour is
+//!   constant over the face (`glShadeModel(GL_FLAT)`; a `flat` varying in GLSL).
 //!
 //! Every pixel's colour comes from the front or the back colours by the facing of its triangle;
 //! with a separate specular colour the two are summed and clamped (GL's colour sum, §3.9).
@@ -32,6 +32,50 @@ use crate::render::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.
 const FACES_PER_TASK: usize = 4096;
+
+/// Where flat shading lights a face: the vertex whose colour GL's flat shading takes
+/// (`glProvokingVertex`), or the face's centroid.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Provoking {
+    /// The last vertex (`GL_LAST_VERTEX_CONVENTION`, GL's default).
+    #[default]
+    Last,
+    /// The first vertex (`GL_FIRST_VERTEX_CONVENTION`: Direct3D's, Vulkan's and Metal's).
+    First,
+    /// The mean of the three positions and of the three vertex colours (PyTorch3D's
+    /// `flat_shading`, glshade's `shade_mesh(per="face")`).
+    Centroid,
+}
+
+impl Provoking {
+    /// Parses `"last"`, `"first"` or `"centroid"`.
+    ///
+    /// # Errors
+    /// A value error naming `provoking_vertex` for any other string.
+    pub fn parse(name: &str) -> Result<Self, Error> {
+        match name {
+            "last" => Ok(Self::Last),
+            "first" => Ok(Self::First),
+            "centroid" => Ok(Self::Centroid),
+            _ => Err(Error::value(format!(
+                "provoking_vertex must be 'last', 'first' or 'centroid', got '{name}'"
+            ))),
+        }
+    }
+
+    /// The face's value of a per-vertex quantity `at(vertex)`: one vertex's, or the mean of
+    /// the three (in f64, then rounded once).
+    fn of<T: Real>(self, face: &[i64; 3], at: impl Fn(usize) -> T) -> T {
+        match self {
+            Self::Last => at(index(face[2])),
+            Self::First => at(index(face[0])),
+            Self::Centroid => {
+                let sum: f64 = face.iter().map(|&i| at(index(i)).to_f64()).sum();
+                T::from_f64(sum / 3.0)
+            }
+        }
+    }
+}
 
 /// Σ weights[j] · rows[face[j]]: an attribute of the face's corners at a pixel.
 #[inline]
@@ -254,12 +298,12 @@ impl<T: Real> Pass<'_, T> {
             })
     }
 
-    /// Flat: each face is lit at its provoking (last) vertex with its normal, the mesh's
-    /// (one per face) or the face normal.
+    /// Flat: each face is lit at its provoking vertex (or centroid) with its normal, the
+    /// mesh's (one per face) or the face normal.
     ///
     /// # Errors
     /// Those of [`Shader::shade`] and [`face_normals`]; a memory error for the per-face buffers.
-    pub fn flat(&self, image: &mut [T], stop: &Stop) -> Result<(), Error> {
+    pub fn flat(&self, provoking: Provoking, image: &mut [T], stop: &Stop) -> Result<(), Error> {
         let clamp = self.shader.clamp();
         let mesh = self.mesh;
         let m = mesh.faces.len();
@@ -272,9 +316,10 @@ impl<T: Real> Pass<'_, T> {
             computed = n;
             &computed
         };
-        let provoking = |f: &[i64; 3]| index(f[2]);
         let positions = try_par_collect(
-            mesh.faces.par_iter().map(|f| mesh.vertices[provoking(f)]),
+            mesh.faces
+                .par_iter()
+                .map(|f| std::array::from_fn(|k| provoking.of(f, |i| mesh.vertices[i][k]))),
             "the provoking positions",
         )?;
         let texels = self.vertex_colors(stop)?;
@@ -290,8 +335,9 @@ impl<T: Real> Pass<'_, T> {
                             return;
                         }
                         for (d, f) in dst.chunks_exact_mut(c.width).zip(faces) {
-                            let i = provoking(f);
-                            d.copy_from_slice(&c.data[i * c.width..(i + 1) * c.width]);
+                            for (j, d) in d.iter_mut().enumerate() {
+                                *d = provoking.of(f, |i| c.data[i * c.width + j]);
+                            }
                         }
                     });
                 stop.check()?;

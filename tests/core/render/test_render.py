@@ -266,6 +266,25 @@ def test_the_nearest_surface_wins() -> None:
     np.testing.assert_array_equal(image, image2)
 
 
+@pytest.mark.parametrize("dtype", [np.float64, np.float32])
+def test_flat_shading_takes_the_provoking_vertex_colour(dtype: Any) -> None:
+    # Emission colours per vertex: flat shading paints the last vertex's (GL), the first's
+    # (Direct3D) or their mean (the centroid, PyTorch3D's) over the whole face.
+    tri = np.array([[-0.9, -0.9, 0], [0.9, -0.9, 0], [0, 0.9, 0]], dtype)
+    colours = np.array([[0.9, 0.1, 0.2], [0.2, 0.8, 0.1], [0.1, 0.3, 0.7]], dtype)
+    args: dict[str, Any] = {"colors": colours, "color_material": "emission", "shading": "flat"}
+    scene = emission_scene((0, 0, 0))
+    expected = {"last": colours[2], "first": colours[0], "centroid": colours.astype(float).mean(0)}
+    for provoking, colour in expected.items():
+        image = gs.render(tri, [[0, 1, 2]], scene, gs.Camera(), width=16, height=16,
+                          provoking_vertex=provoking, **args)  # fmt: skip
+        drawn = image[image[..., 3] > 0]
+        assert len(drawn) > 50
+        tolerance = 1e-15 if dtype == np.float64 else 1e-7
+        np.testing.assert_allclose(drawn[:, :3], np.broadcast_to(colour, drawn[:, :3].shape),
+                                   rtol=0, atol=tolerance)  # fmt: skip
+
+
 # --- winding, culling, two-sided lighting ----------------------------------------------------
 
 
@@ -297,8 +316,9 @@ def test_winding_culling_and_two_sided_colours() -> None:
 
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32])
-@pytest.mark.parametrize("shading", ["phong", "gouraud", "flat"])
+@pytest.mark.parametrize("shading", ["phong", "gouraud", "flat", "flat:first", "flat:centroid"])
 def test_colours_are_shade_at_the_pixel(dtype: Any, shading: Any) -> None:
+    shading, _, provoking = shading.partition(":")
     width, height = 40, 36
     camera = gs.Camera.look_at((0.4, -0.3, 3.5), (0, 0, 0), fovy=55, near=0.5, far=20)
     model = np.array([[1, 0, 0, 0.1], [0, 0.8, 0.3, 0], [0, -0.2, 1.1, -0.2], [0, 0, 0, 1.0]])
@@ -321,6 +341,7 @@ def test_colours_are_shade_at_the_pixel(dtype: Any, shading: Any) -> None:
         width=width,
         height=height,
         shading=shading,
+        provoking_vertex=provoking or "last",
         normals=flat_normal if shading == "flat" else normals,
         model=model,
     )
@@ -351,7 +372,8 @@ def test_colours_are_shade_at_the_pixel(dtype: Any, shading: Any) -> None:
     elif shading == "gouraud":
         expected = colour_sum(*(b @ lit(tri, normals)))  # both interpolated, then summed
     else:
-        expected = np.broadcast_to(colour_sum(*lit(tri[2:], flat_normal)), (len(b), 4))
+        at = {"": tri[2:], "first": tri[:1], "centroid": tri.mean(axis=0, keepdims=True)}
+        expected = np.broadcast_to(colour_sum(*lit(at[provoking], flat_normal)), (len(b), 4))
     tolerance = 1e-9 if dtype == np.float64 else 2e-5
     np.testing.assert_allclose(image[inside], expected, atol=tolerance)
 
@@ -491,6 +513,7 @@ TRI = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
         ({"width": 2.5}, TypeError, "width must be an integer"),
         ({"shading": "toon"}, ValueError, "shading must be 'flat', 'gouraud' or 'phong'"),
         ({"cull": "sideways"}, ValueError, "cull must be None, 'back'"),
+        ({"provoking_vertex": "middle"}, ValueError, "provoking_vertex must be 'last', 'first' or"),
         ({"normals": np.zeros((2, 3))}, ValueError, r"normals must have 3 rows \(one per vertex\)"),
         ({"normals": np.zeros((3, 3)), "shading": "flat"}, ValueError, "one per face for flat"),
         ({"colors": np.zeros((3, 5))}, ValueError, "colors must have shape"),
