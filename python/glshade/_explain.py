@@ -18,8 +18,8 @@ from ._intake import colors_checked, real
 from ._normals import crease_normals, vertex_normals
 from ._render import render
 from ._render_input import render_input
-from ._scene import Lights, Scene
-from ._transfer import apply_transfer
+from ._scene import Lights, Material, Scene
+from ._transfer import apply_transfer, srgb_decode
 from ._typing import Weighting
 
 __all__ = ["Explanation", "explain"]
@@ -31,7 +31,14 @@ SWITCHES: dict[str, tuple[Any, ...]] = {
     "lights_in": ("eye", "world"),
     "normals": ("angle", "area", "uniform", "crease"),
     "cull": (None, "back", "front"),
+    # "cw": the faces' vertices in the other order, so their normals and facing flip.
+    "winding": ("ccw", "cw"),
+    # Shininess conventions: 0-1000 (Wavefront's Ns) against GL's 0-128 (0.128 and 7.8125),
+    # Blinn against Phong exponents (4 and 1/4), 0-1 against 0-128.
+    "shininess_scale": (1.0, 0.128, 0.25, 4.0, 7.8125, 128.0),
 }
+# Searched with flat shading only.
+PROVOKING = ("last", "first", "centroid")
 # Applied to a render after it is made (no new render): the output transfer and GL's clamp.
 TRANSFERS = ("linear", "srgb", "gamma2.2")
 CLAMPS = (True, False)
@@ -43,7 +50,9 @@ MARGIN = 1e-4
 EXPLAINED = 2.0 / 255
 # Light scales searched: factors from 1/20 to 20 (a golden-section search on log k).
 SCALE_RANGE = (math.log(0.05), math.log(20.0))
-PIXELS_FOR_FITS = 40_000
+# Ambient scales searched: 0 (a renderer without the global ambient term) to 10.
+AMBIENT_RANGE = (0.0, 10.0)
+PIXELS_FOR_FITS = 20_000
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -55,9 +64,11 @@ class Explanation:
     switches : dict
         The switches that explain the image, by name, where they differ from the render as
         given: ``specular``, ``specular_gate``, ``lights_in``, ``normals`` (``"angle"``,
-        ``"area"``, ``"uniform"``, or ``"crease"`` at 30 degrees), ``cull``, ``transfer`` and
-        ``clamp``; and ``light_scale``, the factor on every light's colours, where it is not 1.
-        Empty when the image is not explained.
+        ``"area"``, ``"uniform"``, or ``"crease"`` at 30 degrees), ``cull``, ``winding``
+        (``"cw"``: the faces' vertices in the other order), ``shininess_scale``,
+        ``provoking_vertex`` (flat shading), ``transfer`` and ``clamp``; ``light_scale``, the
+        factor on every light's colours, and ``ambient_scale``, the factor on the global
+        ambient term, where they are not 1. Empty when the image is not explained.
     closest : dict
         The same for the best render found, explained or not.
     residual_before : float
@@ -82,8 +93,29 @@ class Explanation:
     renders: int
 
 
-def _with(scene: Scene, scale: float, specular: str, gate: bool) -> Scene:
-    """`scene` with every light's colours times `scale`, and the specular model and gate."""
+def _shinier(material: Material, factor: float) -> Material:
+    if factor == 1.0:
+        return material
+    return Material(
+        ambient=material.ambient,
+        diffuse=material.diffuse,
+        specular=material.specular,
+        emission=material.emission,
+        shininess=material.shininess * factor,
+    )
+
+
+def _with(
+    scene: Scene,
+    scale: float,
+    specular: str,
+    gate: bool,
+    *,
+    shininess: float = 1.0,
+    ambient: float = 1.0,
+) -> Scene:
+    """`scene` with every light's colours times `scale`, the specular model and gate, the
+    materials' shininess times `shininess` and the global ambient's RGB times `ambient`."""
     lights = scene.lights
     columns: dict[str, Any] = {n: lights._column(n) for n in _glshade.Lights.PARAMETERS}
     count = len(lights)
@@ -95,12 +127,15 @@ def _with(scene: Scene, scale: float, specular: str, gate: bool) -> Scene:
     columns["spot_direction"] = columns["spot_direction"].reshape(count, 3)
     parameters = [real(columns[n], n) for n in _glshade.Lights.PARAMETERS]
     scaled = Lights._wrap(_glshade.Lights(parameters, None)) if count else Lights(count=0)
+    back = None if scene.back_material is scene.material else scene.back_material
+    global_ambient = scene.global_ambient.copy()
+    global_ambient[:3] *= ambient
     with colors_checked():
         return Scene(
             lights=scaled,
-            material=scene.material,
-            back_material=None if scene.back_material is scene.material else scene.back_material,
-            global_ambient=scene.global_ambient,
+            material=_shinier(scene.material, shininess),
+            back_material=None if back is None else _shinier(back, shininess),
+            global_ambient=global_ambient,
             viewer=scene.viewer,
             two_side=scene.two_side,
             separate_specular=scene.separate_specular,
@@ -125,7 +160,18 @@ def _sampled_residual(
     return float(np.mean(np.abs(_encoded(unlit + math.exp(log_k) * lit, clamp, transfer) - target)))
 
 
-def _golden(f: Any, lo: float, hi: float, steps: int = 40) -> float:
+def _decoded(encoded: NDArray[Any], transfer: str) -> NDArray[Any]:
+    """Linear values from `encoded` ones: `apply_transfer` undone."""
+    if transfer == "linear":
+        return encoded
+    if transfer == "srgb":
+        decoded: NDArray[Any] = srgb_decode(encoded)
+        return decoded
+    gamma: NDArray[Any] = np.sign(encoded) * np.abs(encoded) ** 2.2
+    return gamma
+
+
+def _golden(f: Any, lo: float, hi: float, steps: int = 30) -> float:
     """The minimiser of a unimodal `f` on [lo, hi], by golden-section search."""
     ratio = (math.sqrt(5) - 1) / 2
     a, b = lo, hi
@@ -157,8 +203,11 @@ def explain(
     a time, keeping the change that lowers the residual most, until none helps: the output
     transfer (linear, sRGB, gamma 2.2) and GL's clamp, Blinn or Phong, the specular gate,
     lights in eye or world coordinates, the normals' weighting (angle, area, uniform) or
-    creases at 30 degrees, and culling (none, back, front); with each, the light intensity
-    scale that fits best (from 1/20 to 20: a π or ``1/π`` convention shows as 3.14 or 0.32).
+    creases at 30 degrees, culling (none, back, front), the faces' winding, shininess scales
+    (0.128, 1/4, 4, 7.8125, 128) and, with flat shading, the provoking vertex (last, first,
+    centroid); with each, the light intensity scale that fits best (from 1/20 to 20: a π or
+    ``1/π`` convention shows as 3.14 or 0.32); and, as one more move, a scale of the global
+    ambient term (0 to 10) fitted with it.
 
     Parameters
     ----------
@@ -173,8 +222,8 @@ def explain(
         As for `render`.
     **render_options
         `render`'s other keywords (``shading``, ``model``, ``background``...), as meant. The
-        searched ones (``transfer``, ``clamp``, ``cull``, ``lights_in``, ``normals``) start
-        from the values given.
+        searched ones (``transfer``, ``clamp``, ``cull``, ``lights_in``, ``normals``,
+        ``provoking_vertex``) start from the values given.
 
     Returns
     -------
@@ -206,12 +255,20 @@ def explain(
         width=width, height=height, texture=False,
     )  # fmt: skip
     v, f, lens = given.vertices.astype(np.float64), given.faces, given.camera
-    start = {
+    flat = str(render_options.get("shading", "phong")).lower() == "flat"
+    switches_searched = dict(SWITCHES)
+    if flat:
+        switches_searched["provoking_vertex"] = PROVOKING
+    start: dict[str, Any] = {
         "specular": base.specular,
         "specular_gate": base.specular_gate,
         "lights_in": lights_in0,
         "normals": "angle",
         "cull": render_options.pop("cull", None),
+        "winding": "ccw",
+        "shininess_scale": 1.0,
+        "provoking_vertex": render_options.pop("provoking_vertex", "last"),
+        "ambient_scale": 1.0,
     }
     transfer0 = render_options.pop("transfer", None) or "linear"
     clamp0 = render_options.pop("clamp", True)
@@ -222,52 +279,102 @@ def explain(
     sample = rng.choice(height * width, min(PIXELS_FOR_FITS, height * width), replace=False)
     flat_target = target[..., :3].reshape(-1, 3)
 
-    def normals_of(kind: str) -> NDArray[Any]:
-        if kind == "crease":
-            return crease_normals(v, f, angle=CREASE_ANGLE)
-        return vertex_normals(v, f, weighting=cast(Weighting, kind))
+    def faces_of(config: dict[str, Any]) -> NDArray[Any]:
+        return f if config["winding"] == "ccw" else np.ascontiguousarray(f[:, ::-1])
 
-    def draw(config: dict[str, Any], scale: float) -> NDArray[Any]:
+    def normals_of(config: dict[str, Any]) -> NDArray[Any]:
+        faces = faces_of(config)
+        if config["normals"] == "crease":
+            return crease_normals(v, faces, angle=CREASE_ANGLE)
+        return vertex_normals(v, faces, weighting=cast(Weighting, config["normals"]))
+
+    def draw(config: dict[str, Any], scale: float, ambient: float = 1.0) -> NDArray[Any]:
         nonlocal renders
         renders += 1
-        lit = _with(base, scale, config["specular"], config["specular_gate"])
-        shading = render_options.get("shading", "phong")
-        normals = None if shading == "flat" else normals_of(config["normals"])
+        lit = _with(
+            base, scale, config["specular"], config["specular_gate"],
+            shininess=config["shininess_scale"], ambient=ambient,
+        )  # fmt: skip
+        extra = {"provoking_vertex": config["provoking_vertex"]} if flat else {}
         return np.asarray(render(
-            v, f, lit, lens, width=width, height=height, normals=normals, cull=config["cull"],
-            lights_in=config["lights_in"], transfer="linear", clamp=False, **render_options,
+            v, faces_of(config), lit, lens, width=width, height=height,
+            normals=None if flat else normals_of(config), cull=config["cull"],
+            lights_in=config["lights_in"], transfer="linear", clamp=False, **extra,
+            **render_options,
         ))  # fmt: skip
 
+    # Renders without light: emission and global ambient (`unlit`), emission alone (`dark`),
+    # RGB rows. Only what is drawn (culling, winding) changes them: one of each per drawing.
     unlit: dict[Any, NDArray[Any]] = {}
+    dark: dict[Any, NDArray[Any]] = {}
 
-    def fit(config: dict[str, Any]) -> tuple[float, dict[str, Any], NDArray[Any]]:
-        """The best transfer, clamp and light scale for a structure: residual, switches, image."""
-        one = draw(config, 1.0)
-        # Without light (scale 0) a render is emission and global ambient: only what is drawn
-        # (the culling) changes it, so one per culling.
-        if config["cull"] not in unlit:
-            unlit[config["cull"]] = draw(config, 0.0)
-        zero = unlit[config["cull"]]
-        lit1, lit0 = one[..., :3].reshape(-1, 3), zero[..., :3].reshape(-1, 3)
-        s1, s0, st = lit1[sample], lit0[sample], flat_target[sample]
-        best: tuple[float, dict[str, Any]] = (math.inf, {})
-        for transfer in TRANSFERS:
-            for clamp in CLAMPS:
-                residual = functools.partial(_sampled_residual, s0, s1 - s0, st, clamp, transfer)
+    def unlit_rows(config: dict[str, Any]) -> tuple[NDArray[Any], NDArray[Any] | None]:
+        """Emission + a·ambient, and the ambient term (None when `a` is 1: not needed)."""
+        key = (config["cull"], config["winding"])
+        if key not in unlit:
+            unlit[key] = draw(config, 0.0)[..., :3].reshape(-1, 3)
+        if config["ambient_scale"] == 1.0:
+            return unlit[key], None
+        if key not in dark:
+            dark[key] = draw(config, 0.0, ambient=0.0)[..., :3].reshape(-1, 3)
+        ambient = unlit[key] - dark[key]
+        return dark[key] + config["ambient_scale"] * ambient, ambient
 
-                at_one = residual(0.0)
-                log_k = _golden(residual, *SCALE_RANGE)
-                k = 1.0 if at_one <= residual(log_k) + MARGIN else math.exp(log_k)
-                r = residual(math.log(k))
-                if r < best[0] - 1e-12:
-                    best = (r, {"transfer": transfer, "clamp": clamp, "light_scale": k})
-        post = best[1]
-        k = post["light_scale"]
-        linear = lit0 + k * (lit1 - lit0)
+    def fit(config: dict[str, Any], post: dict[str, Any] | None = None) -> tuple[
+        float, dict[str, Any], NDArray[Any]
+    ]:  # fmt: skip
+        """The full-image residual of a structure with the transfer, clamp and light scale
+        that fit it best on the sampled pixels (or those of `post`), and its picture."""
+        one = draw(config, 1.0, ambient=config["ambient_scale"])
+        lit1 = one[..., :3].reshape(-1, 3)
+        lit0, _ = unlit_rows(config)
+        if post is None:
+            s1, s0, st = lit1[sample], lit0[sample], flat_target[sample]
+            best: tuple[float, dict[str, Any]] = (math.inf, {})
+            for transfer in TRANSFERS:
+                for clamp in CLAMPS:
+                    residual = functools.partial(
+                        _sampled_residual, s0, s1 - s0, st, clamp, transfer
+                    )
+                    at_one = residual(0.0)
+                    log_k = _golden(residual, *SCALE_RANGE)
+                    k = 1.0 if at_one <= residual(log_k) + MARGIN else math.exp(log_k)
+                    r = residual(math.log(k))
+                    if r < best[0] - 1e-12:
+                        best = (r, {"transfer": transfer, "clamp": clamp, "light_scale": k})
+            post = best[1]
+        linear = lit0 + post["light_scale"] * (lit1 - lit0)
         encoded = _encoded(linear, post["clamp"], post["transfer"])
         full = float(np.mean(np.abs(encoded - flat_target)))
         picture = np.concatenate([encoded.reshape(height, width, 3), one[..., 3:]], axis=-1)
         return full, post, picture
+
+    def fit_ambient(
+        config: dict[str, Any], post: dict[str, Any]
+    ) -> tuple[tuple[float, dict[str, Any], NDArray[Any]], dict[str, Any]] | None:
+        """The global ambient's scale and the light scale fitted together for `config` with
+        `post`'s transfer and clamp; None when the scene has no global ambient term."""
+        _, ambient_rows = unlit_rows({**config, "ambient_scale": 0.0})
+        key = (config["cull"], config["winding"])
+        if ambient_rows is None or not ambient_rows[sample].any():
+            return None
+        lights = draw(config, 1.0, ambient=0.0)[..., :3].reshape(-1, 3)[sample]
+        emission, ambient = dark[key][sample], ambient_rows[sample]
+        lights = lights - emission
+        # Least squares in linear values, on the pixels the transfer can be undone at (inside
+        # (0, 1) when clamped: a clipped value says only that the sum is beyond the clip).
+        st, clamp = flat_target[sample], post["clamp"]
+        target = _decoded(st, post["transfer"])
+        usable = ((st > 1e-6) & (st < 1 - 1e-6)) if clamp else np.isfinite(target)
+        basis = np.stack([ambient[usable], lights[usable]], axis=1)
+        rhs = target[usable] - emission[usable]
+        if len(rhs) < 2 or np.linalg.matrix_rank(basis) < 2:
+            return None
+        (a, k), *_ = np.linalg.lstsq(basis, rhs, rcond=None)
+        a = float(np.clip(a, *AMBIENT_RANGE))
+        k = float(np.clip(k, *np.exp(SCALE_RANGE)))
+        candidate = {**config, "ambient_scale": a}
+        return fit(candidate, {**post, "light_scale": k}), candidate
 
     def residual_as_given() -> float:
         picture = draw(start, 1.0)[..., :3].reshape(-1, 3)
@@ -279,22 +386,27 @@ def explain(
     score, post, picture = fit(config)
     while True:
         trials = []
-        for name, values in SWITCHES.items():
+        for name, values in switches_searched.items():
             for value in values:
                 if value != config[name]:
                     candidate = {**config, name: value}
                     trials.append((fit(candidate), candidate))
+        ambient_trial = fit_ambient(config, post)
+        if ambient_trial is not None:
+            trials.append(ambient_trial)
         (new_score, new_post, new_picture), candidate = min(trials, key=lambda t: t[0][0])
         if new_score >= score - MARGIN:
             break
         score, post, picture, config = new_score, new_post, new_picture, candidate
-    switches = {k: config[k] for k in SWITCHES if config[k] != start[k]}
+    switches = {k: config[k] for k in switches_searched if config[k] != start[k]}
     if post["transfer"] != transfer0:
         switches["transfer"] = post["transfer"]
     if post["clamp"] != clamp0:
         switches["clamp"] = post["clamp"]
     if abs(post["light_scale"] - 1.0) > 1e-3:
         switches["light_scale"] = post["light_scale"]
+    if abs(config["ambient_scale"] - 1.0) > 1e-3:
+        switches["ambient_scale"] = config["ambient_scale"]
     explained = score <= EXPLAINED
     return Explanation(
         switches=switches if explained else {},

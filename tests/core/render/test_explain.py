@@ -1,4 +1,4 @@
-"""`gs.explain` on renders with one or two convention switches planted (22 cases across every
+"""`gs.explain` on renders with one or two convention switches planted (33 cases across every
 switch, 256 x 256): it must name exactly the planted switches (the light scale within 1%) in at
 least 90% of the cases and bring the residual within 1e-3 of the truth's (0); on images no
 convention explains (noise, another mesh, a tinted render) it must say so and name nothing."""
@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import glshade as gs
-from glshade._explain import _with
+from glshade._explain import SWITCHES, _with
 
 pytestmark = pytest.mark.slow
 
@@ -43,22 +43,37 @@ CASES: list[dict[str, Any]] = [
     {"lights_in": "world", "light_scale": 0.5}, {"normals": "area", "transfer": "srgb"},
     {"normals": "crease", "transfer": "srgb"}, {"cull": "back", "specular": "phong"},
     {"normals": "uniform", "transfer": "gamma2.2"}, {"light_scale": math.pi, "transfer": "srgb"},
+    {"winding": "cw"}, {"winding": "cw", "transfer": "srgb"}, {"shininess_scale": 4.0},
+    {"shininess_scale": 0.128}, {"shininess_scale": 7.8125, "transfer": "gamma2.2"},
+    {"ambient_scale": 3.0}, {"ambient_scale": 0.0}, {"ambient_scale": 0.0, "light_scale": 2.0},
+    # Flat shading ("shading" is the render as meant, not a switch).
+    {"shading": "flat", "provoking_vertex": "first"},
+    {"shading": "flat", "provoking_vertex": "centroid"},
+    {"shading": "flat", "provoking_vertex": "centroid", "transfer": "srgb"},
 ]  # fmt: skip
 
 
 def planted(switches: dict[str, Any]) -> np.ndarray:
     """The picture the meant render becomes with `switches`, made independently of `explain`'s
-    search: the scene changed by hand, the normals computed, one `render` call."""
+    search: the scene changed by hand, the faces and normals computed, one `render` call."""
     scene = _with(SCENE, switches.get("light_scale", 1.0), switches.get("specular", "blinn"),
-                  switches.get("specular_gate", True))  # fmt: skip
+                  switches.get("specular_gate", True),
+                  shininess=switches.get("shininess_scale", 1.0),
+                  ambient=switches.get("ambient_scale", 1.0))  # fmt: skip
+    faces = F[:, ::-1].copy() if switches.get("winding") == "cw" else F
     kind = switches.get("normals", "angle")
     normals = (
-        gs.crease_normals(V, F, angle=30) if kind == "crease" else gs.vertex_normals(V, F, kind)
+        gs.crease_normals(V, faces, angle=30)
+        if kind == "crease"
+        else gs.vertex_normals(V, faces, kind)
     )
+    shading = switches.get("shading", "phong")
+    extra = {"provoking_vertex": switches.get("provoking_vertex", "last")}
     return np.asarray(gs.render(
-        V, F, scene, CAMERA, width=SIZE, height=SIZE, normals=normals, cull=switches.get("cull"),
+        V, faces, scene, CAMERA, width=SIZE, height=SIZE, cull=switches.get("cull"),
+        normals=None if shading == "flat" else normals, shading=shading,
         lights_in=switches.get("lights_in", "eye"), transfer=switches.get("transfer", "linear"),
-        clamp=switches.get("clamp", True),
+        clamp=switches.get("clamp", True), **extra if shading == "flat" else {},
     ))  # fmt: skip
 
 
@@ -67,7 +82,7 @@ def named(found: dict[str, Any], planted_switches: dict[str, Any]) -> bool:
         return False
     for key, want in planted_switches.items():
         got = found[key]
-        if isinstance(want, float) and not abs(got - want) <= 0.01 * want:
+        if isinstance(want, float) and not abs(got - want) <= 0.01 * want + 1e-3:
             return False
         if not isinstance(want, float) and got != want:
             return False
@@ -76,15 +91,19 @@ def named(found: dict[str, Any], planted_switches: dict[str, Any]) -> bool:
 
 def test_it_names_the_planted_switches() -> None:
     hits = []
-    for switches in CASES:
-        image = planted(switches)
-        assert np.abs(image - planted({})).mean() > 1e-3, f"{switches} is not observable"
-        e = gs.explain(image, (V, F), SCENE, CAMERA)
+    for case in CASES:
+        switches = {k: v for k, v in case.items() if k != "shading"}
+        meant = {"shading": case.get("shading", "phong")}
+        image = planted(case)
+        assert np.abs(image - planted(meant)).mean() > 1e-3, f"{case} is not observable"
+        e = gs.explain(image, (V, F), SCENE, CAMERA, **meant)
         assert e.explained and e.residual_after <= 1e-3, (switches, e.residual_after)
         assert e.residual_before > e.residual_after
         hits.append(named(e.switches, switches))
     assert sum(hits) >= 0.9 * len(CASES), [c for c, h in zip(CASES, hits, strict=True) if not h]
     assert len(CASES) >= 20
+    searched = {"transfer", "clamp", "light_scale", "ambient_scale", "provoking_vertex"}
+    assert {k for c in CASES for k in c} >= searched | set(SWITCHES), "a switch is not planted"
 
 
 def test_an_unplanted_render_needs_no_switch() -> None:
