@@ -52,7 +52,7 @@ EXPLAINED = 2.0 / 255
 SCALE_RANGE = (math.log(0.05), math.log(20.0))
 # Ambient scales searched: 0 (a renderer without the global ambient term) to 10.
 AMBIENT_RANGE = (0.0, 10.0)
-PIXELS_FOR_FITS = 20_000
+PIXELS_FOR_FITS = 10_000
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -171,7 +171,7 @@ def _decoded(encoded: NDArray[Any], transfer: str) -> NDArray[Any]:
     return gamma
 
 
-def _golden(f: Any, lo: float, hi: float, steps: int = 30) -> float:
+def _golden(f: Any, lo: float, hi: float, steps: int = 26) -> float:
     """The minimiser of a unimodal `f` on [lo, hi], by golden-section search."""
     ratio = (math.sqrt(5) - 1) / 2
     a, b = lo, hi
