@@ -14,7 +14,7 @@ from numpy.typing import ArrayLike, NDArray
 from . import _glshade
 from ._camera import Camera
 from ._image import Image
-from ._intake import colors_checked, real
+from ._intake import colors_checked, one_of, real
 from ._normals import crease_normals, vertex_normals
 from ._render import render
 from ._render_input import render_input
@@ -34,8 +34,8 @@ SWITCHES: dict[str, tuple[Any, ...]] = {
     # "cw": the faces' vertices in the other order, so their normals and facing flip.
     "winding": ("ccw", "cw"),
     # Shininess conventions: 0-1000 (Wavefront's Ns) against GL's 0-128 (0.128 and 7.8125),
-    # Blinn against Phong exponents (4 and 1/4), 0-1 against 0-128.
-    "shininess_scale": (1.0, 0.128, 0.25, 4.0, 7.8125, 128.0),
+    # Blinn against Phong exponents (4 and 1/4), 0-1 against 0-128 (128 and 1/128).
+    "shininess_scale": (1.0, 1 / 128, 0.128, 0.25, 4.0, 7.8125, 128.0),
 }
 # Searched with flat shading only.
 PROVOKING = ("last", "first", "centroid")
@@ -257,7 +257,8 @@ def explain(
     v, f, lens = given.vertices.astype(np.float64), given.faces, given.camera
     flat = str(render_options.get("shading", "phong")).lower() == "flat"
     switches_searched = dict(SWITCHES)
-    if flat:
+    if flat:  # flat shading lights with the face normals: the vertex normals do not matter
+        del switches_searched["normals"]
         switches_searched["provoking_vertex"] = PROVOKING
     start: dict[str, Any] = {
         "specular": base.specular,
@@ -267,7 +268,9 @@ def explain(
         "cull": render_options.pop("cull", None),
         "winding": "ccw",
         "shininess_scale": 1.0,
-        "provoking_vertex": render_options.pop("provoking_vertex", "last"),
+        "provoking_vertex": one_of(
+            render_options.pop("provoking_vertex", "last"), "provoking_vertex", PROVOKING
+        ),
         "ambient_scale": 1.0,
     }
     transfer0 = render_options.pop("transfer", None) or "linear"
@@ -280,7 +283,12 @@ def explain(
     flat_target = target[..., :3].reshape(-1, 3)
 
     def faces_of(config: dict[str, Any]) -> NDArray[Any]:
-        return f if config["winding"] == "ccw" else np.ascontiguousarray(f[:, ::-1])
+        """The faces in the winding of `config`: clockwise swaps two corners, keeping the
+        provoking one (the first or the last) where it is."""
+        if config["winding"] == "ccw":
+            return f
+        order = [0, 2, 1] if config["provoking_vertex"] == "first" else [1, 0, 2]
+        return np.ascontiguousarray(f[:, order])
 
     def normals_of(config: dict[str, Any]) -> NDArray[Any]:
         faces = faces_of(config)
@@ -304,13 +312,17 @@ def explain(
         ))  # fmt: skip
 
     # Renders without light: emission and global ambient (`unlit`), emission alone (`dark`),
-    # RGB rows. Only what is drawn (culling, winding) changes them: one of each per drawing.
+    # RGB rows. Only what is drawn (culling, winding) and, with flat shading, the vertex whose
+    # colour a face takes change them: one of each per drawing.
     unlit: dict[Any, NDArray[Any]] = {}
     dark: dict[Any, NDArray[Any]] = {}
 
+    def drawing(config: dict[str, Any]) -> tuple[Any, ...]:
+        return (config["cull"], config["winding"], flat and config["provoking_vertex"])
+
     def unlit_rows(config: dict[str, Any]) -> tuple[NDArray[Any], NDArray[Any] | None]:
         """Emission + a·ambient, and the ambient term (None when `a` is 1: not needed)."""
-        key = (config["cull"], config["winding"])
+        key = drawing(config)
         if key not in unlit:
             unlit[key] = draw(config, 0.0)[..., :3].reshape(-1, 3)
         if config["ambient_scale"] == 1.0:
@@ -355,7 +367,7 @@ def explain(
         """The global ambient's scale and the light scale fitted together for `config` with
         `post`'s transfer and clamp; None when the scene has no global ambient term."""
         _, ambient_rows = unlit_rows({**config, "ambient_scale": 0.0})
-        key = (config["cull"], config["winding"])
+        key = drawing(config)
         if ambient_rows is None or not ambient_rows[sample].any():
             return None
         lights = draw(config, 1.0, ambient=0.0)[..., :3].reshape(-1, 3)[sample]

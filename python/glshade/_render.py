@@ -199,8 +199,9 @@ def render(
     provoking_vertex : {"last", "first", "centroid"}, default: "last"
         Where flat shading lights a face, and whose vertex colour it takes: the last vertex
         (GL's default, ``GL_LAST_VERTEX_CONVENTION``), the first (Direct3D's, Vulkan's and
-        Metal's, ``GL_FIRST_VERTEX_CONVENTION``), or the face's centroid with the mean of its
-        vertex colours (PyTorch3D's ``flat_shading``; `shade_mesh` with ``per="face"``).
+        Metal's, ``GL_FIRST_VERTEX_CONVENTION``), or the face's centroid (where PyTorch3D's
+        ``flat_shading`` and `shade_mesh` with ``per="face"`` light a face) with the mean of
+        its vertex colours.
     normals : (n, 3), (m, 3) or (m, 3, 3) float, optional
         One normal per vertex for Phong and Gouraud, one per face for flat shading; or, for
         Phong and Gouraud, one per face corner (`crease_normals`: each face then gets corners

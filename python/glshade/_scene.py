@@ -129,7 +129,7 @@ class Lights:
         0, 1)``, learnopengl's ``cutOff``. 180 (or `spot_cutoff` itself) is GL's hard edge.
     range : float or (L,) float, default: inf
         A positional light adds nothing, not even its ambient term, at a distance beyond
-        `range` (> 0): Direct3D 11's ``Range`` in Luna's ``LightHelper.hlsl``; inf is GL.
+        `range` (> 0): Direct3D 11's ``Range`` in Luna's ``LightHelper.fx``; inf is GL.
     count : int, optional
         The number of lights when every parameter is a single value; None (the default) makes
         it 1, or the length of the parameters' leading axis.

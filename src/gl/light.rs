@@ -31,10 +31,10 @@ pub struct Light {
     pub quadratic_attenuation: f64,
     /// The inner cone of a soft spot edge in degrees, in [0, `spot_cutoff`], or 180 for GL's
     /// hard edge: the spot factor is scaled by clamp((cos θ − cos c_rli)/(cos inner − cos
-    /// c_rli), 0, 1) (learnopengl's `cutOff`, three.js' `angle·(1 − penumbra)`).
+    /// c_rli), 0, 1) (learnopengl's `cutOff`).
     pub spot_inner_cutoff: f64,
     /// The distance beyond which a positional light adds nothing, not even its ambient term
-    /// (Direct3D 11's `Range` in Luna's `LightHelper.hlsl`), > 0 or +inf (none, GL).
+    /// (Direct3D 11's `Range` in Luna's `LightHelper.fx`), > 0 or +inf (none, GL).
     pub range: f64,
 }
 
@@ -144,9 +144,9 @@ impl Light {
     /// # Errors
     /// A value error when a parameter is not finite (`range` may be +inf); when `spot_cutoff`
     /// or `spot_inner_cutoff` is outside [0, 90] ∪ {180}, or the inner cone is wider than the
-    /// outer one; when `range` is not > 0; when `spot_exponent` or an attenuation is negative; when `position` is
-    /// (0, 0, 0, 0); when a positional light has all three attenuations zero; or when a spot light
-    /// has a zero `spot_direction`.
+    /// outer one; when `range` is not > 0; when `spot_exponent` or an attenuation is negative;
+    /// when `position` is (0, 0, 0, 0); when a positional light has all three attenuations
+    /// zero; or when a spot light has a zero `spot_direction`.
     pub fn validate(&self, index: usize) -> Result<(), Error> {
         let bad = |name: &str, expected: &str, found: String| {
             Err(Error::value(format!(

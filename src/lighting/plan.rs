@@ -29,7 +29,7 @@ pub struct LightPlan {
     pub kind: LightKind,
     /// A positional light with a range (Luna's; not GL's).
     pub range: bool,
-    /// A positional spot light with a soft edge (learnopengl's; not GL's).
+    /// A spot light with a soft edge (learnopengl's; not GL's).
     pub soft_edge: bool,
 }
 

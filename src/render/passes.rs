@@ -5,8 +5,8 @@
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
 //!   and all those pixels are lit in one `shade` call.
 //! - **Flat**: each face is lit once with its face normal, at its provoking vertex (the last
-//!   one, GL's default; the first, Direct3D's; or the centroid, PyTorch3D's), and the colour is
-//!   constant over the face (`glShadeModel(GL_FLAT)`; a `flat` varying in GLSL).
+//!   one, GL's default; the first, Direct3D's) or its centroid (where PyTorch3D lights it),
+//!   and the colour is constant over the face (`glShadeModel(GL_FLAT)`; a `flat` varying).
 //!
 //! Every pixel's colour comes from the front or the back colours by the facing of its triangle;
 //! with a separate specular colour the two are summed and clamped (GL's colour sum, §3.9).
@@ -42,8 +42,8 @@ pub enum Provoking {
     Last,
     /// The first vertex (`GL_FIRST_VERTEX_CONVENTION`: Direct3D's, Vulkan's and Metal's).
     First,
-    /// The mean of the three positions and of the three vertex colours (PyTorch3D's
-    /// `flat_shading`, glshade's `shade_mesh(per="face")`).
+    /// The mean of the three positions (where PyTorch3D's `flat_shading` and glshade's
+    /// `shade_mesh(per="face")` light a face) and of the three vertex colours.
     Centroid,
 }
 

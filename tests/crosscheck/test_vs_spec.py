@@ -61,9 +61,16 @@ def test_random_scenes_agree_with_the_spec(dtype: type) -> None:
 
 @pytest.mark.parametrize("dtype", [np.float64, np.float32], ids=["f64", "f32"])
 def test_soft_spot_edges_and_ranges_agree_with_the_transcription(dtype: type) -> None:
-    # learnopengl's soft edge and Luna's range on random positional lights (add_edges).
+    # learnopengl's soft edge on random lights, Luna's range on positional ones (add_edges).
     compared = sum(check_case(seed, VERTICES, dtype, edges=True) for seed in range(40))
     assert compared >= 38_000
+    soft = [
+        light["position"][3] == 0
+        for seed in range(40)
+        for light in random_case(seed, 1, dtype, edges=True).ref.lights
+        if light.get("spot_inner_cutoff", 180) < light.get("spot_cutoff", 180)
+    ]
+    assert sum(soft) >= 5 and len(soft) - sum(soft) >= 20, "soft edges on both kinds of light"
 
 
 def test_random_scenes_cover_every_feature() -> None:

@@ -175,7 +175,7 @@ def gl_lighting(P: np.ndarray, N: np.ndarray, s: RefScene) -> Reference:
                 spot = np.where(c >= cos_c, c ** L["spot_exponent"], 0.0)
                 margin = np.minimum(margin, np.abs(dot(-VP, sdl) - cos_c))
                 inner = L.get("spot_inner_cutoff", 180.0)
-                if Ppl[3] != 0 and inner < L["spot_cutoff"]:
+                if inner < L["spot_cutoff"]:
                     # Not GL: learnopengl's clamp((theta - outerCutOff) / epsilon, 0.0, 1.0).
                     epsilon = np.cos(np.radians(inner)) - cos_c
                     spot = spot * np.clip((c - cos_c) / epsilon, 0.0, 1.0)

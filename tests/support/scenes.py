@@ -79,14 +79,12 @@ def random_modelview(rng: np.random.Generator) -> np.ndarray:
 
 
 def add_edges(lights: list[dict[str, Any]], seed: int) -> None:
-    """Gives the positional lights, in place, learnopengl's soft spot edges and Luna's ranges
-    (not GL: Mesa has neither), drawn from their own generator so `seed`'s other draws keep
-    their values."""
+    """Gives the lights, in place, learnopengl's soft spot edges and (positional ones) Luna's
+    ranges (not GL: Mesa has neither), drawn from their own generator so `seed`'s other draws
+    keep their values."""
     rng = np.random.default_rng(10**6 + seed)
     for light in lights:
-        if light["position"][3] == 0:
-            continue
-        if rng.random() < 0.6:
+        if light["position"][3] != 0 and rng.random() < 0.6:
             light["range"] = float(rng.uniform(0.5, 6.0))
         if rng.random() < 0.7:
             outer = float(rng.uniform(5, 90))

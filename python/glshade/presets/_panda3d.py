@@ -59,9 +59,9 @@ def panda3d(
     local material, and ``langle = saturate(dot(-axis, lvec))``. In GL's terms: lights without
     ambient colour, the ambient lights' sum as the global ambient, Blinn's halfway vector with
     the infinite viewer along Panda's +y, and **no gate** (``specular_gate=False``: a highlight
-    where the light is behind the surface). The specular term comes after the clamp, but every
-    term is at least 0, so once the framebuffer clamps the sum the colour is GL's single
-    clamped sum. (A float framebuffer keeps ``min(primary, 1) + specular``:
+    where the light is behind the surface). The specular term comes after the clamp, but with
+    colours >= 0 every term is too, so once the framebuffer clamps the sum the colour is GL's
+    single clamped sum. (A float framebuffer keeps ``min(primary, 1) + specular``:
     ``Scene(separate_specular=True)`` with ``clamp=False`` gives the two.) The shader's
     ``* 1.000001`` (a workaround for an old Radeon driver) is left out: it changes a value by
     at most 1e-6.
@@ -73,7 +73,8 @@ def panda3d(
     ----------
     material : mapping, optional
         ``Material``: ``"ambient"``, ``"diffuse"``, ``"emission"``, ``"specular"`` (3,) or
-        (4,) colours and ``"shininess"`` (>= 0). Panda3D then ignores the vertex colours' RGB.
+        (4,) colours and ``"shininess"`` (>= 0). Panda3D then ignores the vertex colours' RGB,
+        so give such a preset no ``colors=`` (`shade` would light them as GL's colour material).
         None (the default) is no material: the vertex colours (``colors=``) are the ambient and
         diffuse colour (white without them) and there is no specular term.
     local : bool, default: False
@@ -185,9 +186,7 @@ def _positional(light: Mapping[str, Any], name: str, cone: dict[str, Any]) -> Li
     return Light(
         position=(*light["point"], 1.0),
         ambient=BLACK,
-        constant_attenuation=float(k[0]),
-        linear_attenuation=float(k[1]),
-        quadratic_attenuation=float(k[2]),
+        **k,
         **cone,
         **_colors(light),
     )

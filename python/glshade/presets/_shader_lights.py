@@ -108,7 +108,8 @@ def learnopengl_lights(
         ``SpotLight`` (chapter 5.4: ``Light``): the point light's members plus ``"direction"``
         and the cosines ``"cutOff"`` (inner) and ``"outerCutOff"``, with
         ``0 <= outerCutOff <= cutOff <= 1`` (``cutOff == outerCutOff``, where the shader divides
-        by zero, is GL's hard edge).
+        by zero, is GL's hard edge; at 0 both, GL's clamped cosine lets the 90-degree cone light
+        what is behind the light, where the shader's ``-inf`` clamps to 0).
     chapter : {"6", "5.4"}, default: "6"
         Which shader: chapter 5.4 has one light, `spot_light`, whose ambient term its spot
         intensity does not scale.
@@ -190,12 +191,7 @@ def _glsl_colors(light: Mapping[str, Any]) -> dict[str, Any]:
 
 def _glsl_attenuation(light: Mapping[str, Any], name: str) -> dict[str, float]:
     names = ("constant", "linear", "quadratic")
-    k = attenuation(np.array([light[n] for n in names]), names, name)
-    return {
-        "constant_attenuation": float(k[0]),
-        "linear_attenuation": float(k[1]),
-        "quadratic_attenuation": float(k[2]),
-    }
+    return attenuation(np.array([light[n] for n in names]), names, name)
 
 
 def _degrees(cosine: float) -> float:
@@ -308,7 +304,8 @@ def directx11_lights(
     Notes
     -----
     At ``Spot = 0`` the shader raises 0 to the power 0 behind the light, which HLSL leaves
-    undefined; glshade's cone gives 0 there, as for any exponent.
+    undefined; glshade follows GL's eq. 2.5, whose clamped cosine makes it 0^0 = 1 there (the
+    light shines behind itself, as numpy's ``0.0 ** 0`` has it).
 
     Warns
     -----
@@ -376,7 +373,7 @@ def _hlsl_positional(light: Mapping[str, Any], name: str, cone: dict[str, Any]) 
     if reach <= 0:
         raise ValueError(f'{name}["Range"] must be > 0, got {reach:g}')
     where = {"position": (*light["Position"], 1.0), "range": reach, **cone}
-    if (k == (1.0, 0.0, 0.0)).all():
+    if tuple(k.values()) == (1.0, 0.0, 0.0):
         return [Light(**where, **_hlsl_colors(light))]
     parts = []
     if light["Ambient"][:3].any():
@@ -388,8 +385,6 @@ def _hlsl_positional(light: Mapping[str, Any], name: str, cone: dict[str, Any]) 
         ambient=BLACK,
         diffuse=light["Diffuse"],
         specular=light["Specular"],
-        constant_attenuation=float(k[0]),
-        linear_attenuation=float(k[1]),
-        quadratic_attenuation=float(k[2]),
+        **k,
     )
     return [*parts, rest]

@@ -48,12 +48,17 @@ def structs(values: Iterable[Any], name: str, members: Mapping[str, Kind]) -> li
     return [struct(v, f"{name}[{i}]", members) for i, v in enumerate(values)]
 
 
-def attenuation(k: Float64Array, names: tuple[str, str, str], owner: str) -> Float64Array:
-    """GL's k0, k1, k2: each >= 0 (GL refuses negative ones), not all 0."""
+def attenuation(k: Float64Array, names: tuple[str, str, str], owner: str) -> dict[str, float]:
+    """GL's k0, k1, k2 as `Light`'s keywords, from a shader's three coefficients `k` (named
+    `names` in `owner`): each >= 0 (GL refuses negative ones), not all 0."""
     if (k < 0).any() or not k.any():
         given = ", ".join(f"{n}={x:g}" for n, x in zip(names, k, strict=True))
         raise ValueError(f"{owner}'s {', '.join(names)} must be >= 0, not all 0, got {given}")
-    return k
+    return {
+        "constant_attenuation": float(k[0]),
+        "linear_attenuation": float(k[1]),
+        "quadratic_attenuation": float(k[2]),
+    }
 
 
 def colors_of(structs: list[dict[str, Any]], name: str, members: Iterable[str]) -> dict[str, Any]:

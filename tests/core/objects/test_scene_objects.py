@@ -171,3 +171,25 @@ def test_defaults_are_gl_s_and_shown_in_the_signatures() -> None:
     light = gs.Light()
     np.testing.assert_array_equal(light.diffuse, (1, 1, 1, 1))
     np.testing.assert_array_equal(light.ambient, (0, 0, 0, 1))
+
+
+def test_soft_edges_and_ranges_per_light_and_their_errors() -> None:
+    lights = gs.Lights(
+        position=[(0, 0, 1, 1), (0, 1, 0, 1), (0, 0, 1, 0)],
+        spot_cutoff=[30.0, 40.0, 90.0],
+        spot_inner_cutoff=[20.0, 180.0, 0.0],
+        range=[2.0, np.inf, 5.0],
+    )
+    np.testing.assert_array_equal(lights.spot_inner_cutoff, [20, 180, 0])
+    np.testing.assert_array_equal(lights.range, [2, np.inf, 5])
+    assert gs.Light().range == np.inf and gs.Light().spot_inner_cutoff == 180
+    bad = [
+        ({"spot_cutoff": 30.0, "spot_inner_cutoff": 40.0}, "spot_inner_cutoff"),
+        ({"spot_cutoff": 30.0, "spot_inner_cutoff": 95.0}, "spot_inner_cutoff"),
+        ({"range": 0.0}, "range"),
+        ({"range": -1.0}, "range"),
+        ({"range": np.nan}, "range"),
+    ]
+    for kwargs, name in bad:
+        with pytest.raises(ValueError, match=name):
+            gs.Light(position=(0, 0, 1, 1), **kwargs)
