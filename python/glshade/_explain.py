@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import dataclasses
 import functools
+import itertools
 import math
 from typing import Any, cast
 
@@ -39,6 +40,9 @@ SWITCHES: dict[str, tuple[Any, ...]] = {
 }
 # Searched with flat shading only.
 PROVOKING = ("last", "first", "centroid")
+# Switches also tried together: clockwise faces culled as back faces are the counter-clockwise
+# ones culled as front faces, which neither change alone brings closer.
+JOINT = (("winding", "cull"),)
 # Applied to a render after it is made (no new render): the output transfer and GL's clamp.
 TRANSFERS = ("linear", "srgb", "gamma2.2")
 CLAMPS = (True, False)
@@ -402,6 +406,11 @@ def explain(
             for value in values:
                 if value != config[name]:
                     candidate = {**config, name: value}
+                    trials.append((fit(candidate), candidate))
+        for first, second in JOINT:
+            for a, b in itertools.product(SWITCHES[first], SWITCHES[second]):
+                if a != config[first] and b != config[second]:
+                    candidate = {**config, first: a, second: b}
                     trials.append((fit(candidate), candidate))
         ambient_trial = fit_ambient(config, post)
         if ambient_trial is not None:

@@ -1,4 +1,4 @@
-"""`gs.explain` on renders with one or two convention switches planted (33 cases across every
+"""`gs.explain` on renders with one or two convention switches planted (35 cases across every
 switch, 256 x 256): it must name exactly the planted switches (the scales within 1%) in at
 least 90% of the cases and bring the residual within 1e-5 of the truth's (0); on images no
 convention explains (noise, another mesh, a tinted render) it must say so and name nothing."""
@@ -43,7 +43,8 @@ CASES: list[dict[str, Any]] = [
     {"lights_in": "world", "light_scale": 0.5}, {"normals": "area", "transfer": "srgb"},
     {"normals": "crease", "transfer": "srgb"}, {"cull": "back", "specular": "phong"},
     {"normals": "uniform", "transfer": "gamma2.2"}, {"light_scale": math.pi, "transfer": "srgb"},
-    {"winding": "cw"}, {"winding": "cw", "transfer": "srgb"}, {"shininess_scale": 4.0},
+    {"winding": "cw"}, {"winding": "cw", "transfer": "srgb"}, {"winding": "cw", "cull": "back"},
+    {"winding": "cw", "cull": "front"}, {"shininess_scale": 4.0},
     {"shininess_scale": 0.128}, {"shininess_scale": 7.8125, "transfer": "gamma2.2"},
     {"ambient_scale": 3.0}, {"ambient_scale": 0.0}, {"ambient_scale": 0.0, "light_scale": 2.0},
     # Flat shading ("shading" is the render as meant, not a switch).
