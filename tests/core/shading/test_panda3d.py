@@ -25,21 +25,10 @@ import numpy as np
 import pytest
 
 import glshade as gs
+from support.shader_math import dot, normalize, saturate
 
 TOL = {np.float64: 1e-12, np.float32: 1e-5}
 VERTICES = 600
-
-
-def normalize(v: np.ndarray) -> np.ndarray:
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
-def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return np.sum(a * b, axis=-1, keepdims=True)
-
-
-def saturate(x: Any) -> Any:
-    return np.clip(x, 0.0, 1.0)
 
 
 def rgba(c: Any) -> np.ndarray:

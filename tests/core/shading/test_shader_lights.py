@@ -24,25 +24,10 @@ import numpy as np
 import pytest
 
 import glshade as gs
+from support.shader_math import clamp, dot, normalize, reflect
 
 TOL = {np.float64: 1e-12, np.float32: 1e-5}
 VERTICES = 600
-
-
-def normalize(v: np.ndarray) -> np.ndarray:
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
-
-
-def dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    return np.sum(a * b, axis=-1, keepdims=True)
-
-
-def reflect(I: np.ndarray, N: np.ndarray) -> np.ndarray:  # noqa: E741 (GLSL's names)
-    return I - 2.0 * dot(N, I) * N
-
-
-def clamp(x: Any, lo: float, hi: float) -> Any:
-    return np.minimum(np.maximum(x, lo), hi)
 
 
 # --- learnopengl ------------------------------------------------------------------------------
