@@ -571,6 +571,33 @@ mod tests {
     }
 
     #[test]
+    fn a_soft_edge_narrower_than_the_dtype_is_a_finite_step() {
+        // cos 10° and cos(10° + 1e-14°) are equal even in f64: the width would be 0, and 0/0
+        // NaN on the edge. It is held at f32's least normal number instead: a step, 0 from the
+        // edge outwards, 1 inside.
+        let light = Light {
+            position: [0.0, 0.0, 0.0, 1.0],
+            spot_cutoff: 10.0 + 1e-14,
+            spot_inner_cutoff: 10.0,
+            ..Light::default()
+        };
+        let p = prepare_light::<f32>(&light, 0, None, true).unwrap();
+        let Source::Positional {
+            spot: Some(spot), ..
+        } = p.source
+        else {
+            panic!("positional spot expected")
+        };
+        assert_eq!(spot.edge.map(|e| e.width), Some(f32::MIN_POSITIVE));
+        for (degrees, expected) in [(0.0_f64, 1.0), (5.0, 1.0), (10.0, 0.0), (20.0, 0.0)] {
+            let theta = degrees.to_radians();
+            let to_vertex = [theta.sin() as f32, 0.0, -theta.cos() as f32];
+            let got = spot_factor(&spot, V3::<Pack<f32, 1>>::splat(to_vertex), true).0[0];
+            assert!(got.is_finite() && got == expected, "{degrees}: {got}");
+        }
+    }
+
+    #[test]
     fn directional_spot_is_a_constant() {
         let light = Light {
             position: [0.0, 0.0, 1.0, 0.0],
