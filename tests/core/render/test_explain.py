@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import glshade as gs
-from glshade._explain import SWITCHES, _with
+from glshade._explain_search import SWITCHES, scene_with
 
 pytestmark = pytest.mark.slow
 
@@ -57,7 +57,7 @@ CASES: list[dict[str, Any]] = [
 def planted(switches: dict[str, Any]) -> np.ndarray:
     """The picture the meant render becomes with `switches`, made independently of `explain`'s
     search: the scene changed by hand, the faces and normals computed, one `render` call."""
-    scene = _with(SCENE, switches.get("light_scale", 1.0), switches.get("specular", "blinn"),
+    scene = scene_with(SCENE, switches.get("light_scale", 1.0), switches.get("specular", "blinn"),
                   switches.get("specular_gate", True),
                   shininess=switches.get("shininess_scale", 1.0),
                   ambient=switches.get("ambient_scale", 1.0))  # fmt: skip
