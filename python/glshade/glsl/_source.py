@@ -120,12 +120,11 @@ def _light_loop(plan: Plan, g: int, group: LightGroup, side: Side) -> list[str]:
                 ramp = f"(c - {u}spot_cos_cutoff[i]) / {u}spot_edge_width[i]"
                 body.append(f"w = w * clamp({ramp}, 0.0, 1.0);")
         if group.ranged:  # Luna's `if (d > L.Range) return;`
-            start = (
-                "w = d <= {r} ? w : 0.0;"
-                if group.attenuated or group.spot
-                else ("float w = d <= {r} ? 1.0 : 0.0;")
+            r = f"{u}range[i]"
+            weighed = group.attenuated or group.spot  # w is declared already
+            body.append(
+                f"w = d <= {r} ? w : 0.0;" if weighed else f"float w = d <= {r} ? 1.0 : 0.0;"
             )
-            body.append(start.format(r=f"{u}range[i]"))
     w = "w * " if weighted else ""
     specular = group.specular and side.specular
     if group.diffuse or specular:
