@@ -243,7 +243,9 @@ class Search:
         lit1 = one[..., :3].reshape(-1, 3)
         lit0, _ = self.unlit_rows(config)
         if post is None:
-            s1, s0, st = lit1[self.sample], lit0[self.sample], self.target[self.sample]
+            # The search runs in float32: the transfer's powers are most of its time, and the
+            # full-image residual below decides in float64.
+            s1, s0, st = (x[self.sample].astype(np.float32) for x in (lit1, lit0, self.target))
             best: tuple[float, dict[str, Any]] = (math.inf, {})
             for transfer in TRANSFERS:
                 for clamp in CLAMPS:
