@@ -175,9 +175,10 @@ def learnopengl_lights(
             specular_gate=False,
         )
     colors = {'material["diffuse"]': mat["diffuse"], 'material["specular"]': mat["specular"]}
-    colors |= colors_of(dirs, "dir_light", ("ambient", "diffuse", "specular"))
-    colors |= colors_of(points, "point_lights", ("ambient", "diffuse", "specular"))
-    colors |= colors_of(spots, "spot_light", ("ambient", "diffuse", "specular"))
+    terms = ("ambient", "diffuse", "specular")
+    colors |= colors_of(dirs, "dir_light", terms, single=True)
+    colors |= colors_of(points, "point_lights", terms)
+    colors |= colors_of(spots, "spot_light", terms, single=True)
     warn_bytes(colors, "learnopengl_lights")
     kwargs: dict[str, Any] = {"normalize": True}
     if matrix is not None:

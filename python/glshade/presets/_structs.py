@@ -61,6 +61,13 @@ def attenuation(k: Float64Array, names: tuple[str, str, str], owner: str) -> dic
     }
 
 
-def colors_of(structs: list[dict[str, Any]], name: str, members: Iterable[str]) -> dict[str, Any]:
-    """The structs' colours by their user names, for `warn_bytes`."""
-    return {f'{name}[{i}]["{m}"]': s[m] for i, s in enumerate(structs) for m in members}
+def colors_of(
+    structs: list[dict[str, Any]], name: str, members: Iterable[str], *, single: bool = False
+) -> dict[str, Any]:
+    """The structs' colours by their user names (``name[i]["member"]``, or ``name["member"]``
+    for the one struct of a `single` argument), for `warn_bytes`."""
+    return {
+        f'{name if single else f"{name}[{i}]"}["{m}"]': s[m]
+        for i, s in enumerate(structs)
+        for m in members
+    }
