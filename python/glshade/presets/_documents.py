@@ -11,7 +11,7 @@ from numpy.typing import ArrayLike
 from .._intake import colors_checked
 from .._params import color_array, real_array, rgb, scalar, vector3, warn_bytes
 from .._scene import Light, Lights, Material, Scene
-from ._preset import BLACK, Preset, model_matrix, one_light
+from ._preset import BLACK, Preset, model_matrix, one_light, world_kwargs
 
 
 def opengl(
@@ -248,10 +248,7 @@ def learnopengl(
             specular_gate=False,
         )
     warn_bytes({"light_color": light, "object_color": obj}, "learnopengl")
-    kwargs: dict[str, Any] = {"normalize": True}
-    if matrix is not None:
-        kwargs["modelview"] = matrix
-    return Preset(scene, kwargs)
+    return Preset(scene, world_kwargs(matrix))
 
 
 def _attenuation(value: Any) -> tuple[float, float, float]:

@@ -132,3 +132,12 @@ def model_matrix(model: ArrayLike | None, name: str = "model") -> FloatArray | N
             f"got determinant {det:g} for the upper-left 3x3"
         )
     return m
+
+
+def world_kwargs(model: FloatArray | None) -> dict[str, Any]:
+    """The `shade` keywords of a model lit in world space: unit normals, and the positions'
+    model matrix when there is one (a shader's ``model`` or ``gWorld``)."""
+    kwargs: dict[str, Any] = {"normalize": True}
+    if model is not None:
+        kwargs["modelview"] = model
+    return kwargs

@@ -20,7 +20,7 @@ from numpy.typing import ArrayLike
 from .._intake import colors_checked
 from .._params import scalar, vector3, warn_bytes
 from .._scene import Light, Material, Scene
-from ._preset import BLACK, Preset, model_matrix
+from ._preset import BLACK, Preset, model_matrix, world_kwargs
 from ._structs import Kind, attenuation, colors_of, struct, structs
 
 _GLSL_DIR: dict[str, Kind] = {
@@ -180,10 +180,7 @@ def learnopengl_lights(
     colors |= colors_of(points, "point_lights", terms)
     colors |= colors_of(spots, "spot_light", terms, single=True)
     warn_bytes(colors, "learnopengl_lights")
-    kwargs: dict[str, Any] = {"normalize": True}
-    if matrix is not None:
-        kwargs["modelview"] = matrix
-    return Preset(scene, kwargs)
+    return Preset(scene, world_kwargs(matrix))
 
 
 def _glsl_colors(light: Mapping[str, Any]) -> dict[str, Any]:
@@ -356,10 +353,7 @@ def directx11_lights(
     for found, name in ((dirs, "dir_lights"), (points, "point_lights"), (spots, "spot_lights")):
         colors |= colors_of(found, name, _HLSL_COLORS)
     warn_bytes(colors, "directx11_lights")
-    kwargs: dict[str, Any] = {"normalize": True}
-    if matrix is not None:
-        kwargs["modelview"] = matrix
-    return Preset(scene, kwargs)
+    return Preset(scene, world_kwargs(matrix))
 
 
 def _hlsl_colors(light: Mapping[str, Any]) -> dict[str, Any]:
