@@ -26,9 +26,10 @@
 //! | `render` | camera, clipping, rasterisation, visibility, the shading passes |
 //! | `relief` | matplotlib's relief shading of elevation grids: hillshade, blends |
 //! | `normals` | face, vertex and corner (creased) normals, the vertex-to-face adjacency |
-//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade`; the metallic-roughness model |
+//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade`; the metallic-roughness and `MeshPhongMaterial` models |
 //! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
 //! | `gltf` | glTF state: the metallic-roughness material, punctual lights, the scene |
+//! | `threejs` | three.js state: `MeshPhongMaterial`, its lights, the scene |
 //! | `numbers` | `exp`/`ln` over lanes, `Real`, matrix helpers |
 //! | `simd` | `f32`/`f64` behind one trait, the lanes of each instruction set, dispatch |
 //! | `memory` | fallible allocation, zeroed scratch pages |
@@ -52,6 +53,8 @@ mod lighting;
 mod gl;
 
 mod gltf;
+
+mod threejs;
 
 mod numbers;
 
@@ -82,6 +85,16 @@ pub mod metallic_roughness {
     pub use crate::gltf::scene::{Scene, ValidScene};
     pub use crate::lighting::metallic_roughness::shade::{describe, shade, shade_uninit, Options};
     pub use crate::render::render_metallic_roughness as render;
+}
+/// three.js' `MeshPhongMaterial` as release 111 (and, with physically correct lights, the
+/// current release) evaluates it: its scene, material and lights (world coordinates, `f64`),
+/// and `shade`, `shade_uninit` and `describe` over arrays of `f32` or `f64`.
+pub mod mesh_phong {
+    pub use crate::lighting::mesh_phong::shade::{describe, shade, shade_uninit, Options};
+    pub use crate::render::render_mesh_phong as render;
+    pub use crate::threejs::light::{Kind, Light};
+    pub use crate::threejs::material::{MeshPhongMaterial, Side};
+    pub use crate::threejs::scene::{Scene, ValidScene, Viewer};
 }
 pub use normals::{face_normals, vertex_normals, Weighting};
 pub use numbers::real::Real;

@@ -3,12 +3,14 @@
 //! for the scene's shape ([`shape`]) and runs the one equation ([`kernel`], with the specular and
 //! spot powers of [`power`]) block by block over rayon's threads ([`shade`]).
 //!
-//! The glTF metallic-roughness model ([`metallic_roughness`]) runs through the same driver.
+//! The glTF metallic-roughness model ([`metallic_roughness`]) and three.js' `MeshPhongMaterial`
+//! ([`mesh_phong`]) run through the same driver.
 //!
-//! Uses [`crate::gltf`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`] and
+//! Uses [`crate::threejs`], [`crate::gltf`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`] and
 //! [`crate::errors`].
 
 pub mod kernel;
+pub mod mesh_phong;
 pub mod metallic_roughness;
 pub mod plan;
 pub mod power;

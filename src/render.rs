@@ -4,8 +4,9 @@
 //! ([`visibility`]), and the visible pixels are lit ([`passes`]).
 //!
 //! The render layer, top of the core: besides those four, [`camera`] (view and projection)
-//! [`mesh`] (what is drawn) and [`shader`] (the lighting model: GL's or glTF's). Uses every layer below it: [`crate::normals`],
-//! [`crate::lighting`], [`crate::gl`], [`crate::gltf`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
+//! [`mesh`] (what is drawn) and [`shader`] (the lighting model: GL's, glTF's or three.js'). Uses
+//! every layer below it: [`crate::normals`], [`crate::lighting`], [`crate::gl`],
+//! [`crate::gltf`], [`crate::threejs`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
 //! and [`crate::errors`].
 
 pub mod camera;
@@ -26,6 +27,7 @@ use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::{Scene as GltfSceneData, ValidScene as GltfScene};
+use crate::lighting::mesh_phong::shade::Options as MeshPhongOptions;
 use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
 use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
@@ -41,6 +43,7 @@ use crate::render::passes::{Frame, Pass};
 use crate::render::raster::{Cull, Triangle, Viewport};
 use crate::render::shader::Shader;
 use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
+use crate::threejs::scene::{Scene as ThreejsSceneData, ValidScene as ThreejsScene, Viewer};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
 /// seven of a face.
@@ -315,6 +318,53 @@ pub fn render_metallic_roughness<T: Real>(
             } else {
                 ColorRole::Multiply
             },
+        },
+    };
+    draw(shader, mesh, camera, options, image, depth, stop)
+}
+
+/// [`render`] with three.js' `MeshPhongMaterial`: `scene` is in world coordinates, its camera
+/// replaced by `camera` (its eye, or for an orthographic projection its +z axis, the shader's
+/// `isOrthographic` view direction), and vertex colours or a texture's sRGB-decoded texels
+/// multiply the material's `color` (three.js' `vertexColors` and `map`). A double-sided
+/// material lights a back-facing triangle with the negated normal. `options.normalize`,
+/// `rescale_normal` and `color_material` do not apply (the model always normalises).
+///
+/// # Errors
+/// As [`render`].
+pub fn render_mesh_phong<T: Real>(
+    scene: &ThreejsScene,
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    image: &mut [T],
+    depth: &mut [T],
+    stop: &Stop,
+) -> Result<(), Error> {
+    validate(mesh, camera, options, image.len(), depth.len())?;
+    if mesh.textured.is_some() && mesh.colors.is_some() {
+        return Err(Error::value(
+            "MeshPhongMaterial takes vertex colours or a colour texture (map), not both",
+        ));
+    }
+    let eye = camera.view.inverse();
+    let p = camera.projection;
+    // An affine projection (bottom row 0, 0, 0, 1) is orthographic.
+    let orthographic = p.x_axis.w == 0.0 && p.y_axis.w == 0.0 && p.z_axis.w == 0.0;
+    let viewer = if orthographic && p.w_axis.w != 0.0 {
+        Viewer::Direction(eye.z_axis.truncate().to_array())
+    } else {
+        Viewer::Position(eye.w_axis.truncate().to_array())
+    };
+    let placed = ThreejsSceneData {
+        viewer,
+        ..(**scene).clone()
+    };
+    let shader = Shader::MeshPhong {
+        scene: placed.validated()?,
+        options: MeshPhongOptions {
+            model: Some(options.model),
+            clamp: options.clamp,
         },
     };
     draw(shader, mesh, camera, options, image, depth, stop)

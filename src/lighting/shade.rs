@@ -402,6 +402,70 @@ pub(crate) fn in_float64<T: Real>(
     Ok(())
 }
 
+/// A lighting model outside GL state whose kernel is built per call: glTF's metallic-roughness
+/// model, three.js' `MeshPhongMaterial`. [`shade_widened`] runs it.
+pub(crate) trait WidenedModel {
+    /// The kernel for arrays of `T`.
+    type Kernel<T: Real>: BlockShader<T>;
+    /// Prepares the kernel for arrays of `T`.
+    ///
+    /// # Errors
+    /// Those of the model's preparation (an invalid model matrix).
+    fn kernel<T: Real>(&self) -> Result<Self::Kernel<T>, Error>;
+}
+
+/// Runs `model` over every row of `inputs` into `planes` planes of RGBA rows in `out`, in `f64`
+/// arithmetic: `f64` arrays directly, `f32` arrays widened ([`in_float64`]) and the result
+/// rounded once, so the models' ill-conditioned corners (powers near the highlight, small
+/// denominators) cost no float32 rounding.
+///
+/// # Errors
+/// A value error for mismatched lengths, those of [`WidenedModel::kernel`], a memory error, or
+/// [`Error::interrupted`].
+pub(crate) fn shade_widened<T: Real, M: WidenedModel>(
+    model: &M,
+    inputs: Inputs<'_, T>,
+    planes: usize,
+    out: &mut [MaybeUninit<T>],
+    stop: &Stop,
+) -> Result<(), Error> {
+    check_rows(
+        inputs.positions,
+        inputs.normals,
+        inputs.colors,
+        planes,
+        out.len(),
+    )?;
+    if std::mem::size_of::<T>() == 8 {
+        let kernel = model.kernel::<T>()?;
+        return run_shader(&kernel, Isa::detect(), inputs, out, stop);
+    }
+    let kernel = model.kernel::<f64>()?;
+    in_float64(
+        inputs,
+        kernel.reads_positions(),
+        out,
+        stop,
+        |wide, dst, stop| run_shader(&kernel, Isa::detect(), wide, dst, stop),
+    )
+}
+
+/// The line `describe` gives for a [`WidenedModel`] with arrays of `T`: the model's `name`, the
+/// arithmetic, the instruction set, the lanes per block and the `plan`.
+pub(crate) fn widened_description<T: Real>(name: &str, plan: &dyn std::fmt::Display) -> String {
+    let isa = Isa::detect();
+    let arrays = if std::mem::size_of::<T>() == 8 {
+        ""
+    } else {
+        " (float32 arrays widened)"
+    };
+    format!(
+        "{name}: float64 arithmetic{arrays}, {}, {} vertices per block; {plan}",
+        isa.name(),
+        block_lanes::<f64>(isa),
+    )
+}
+
 /// Runs the kernel of `prepared` and `plan` over every row with instruction set `isa`,
 /// skipping the tasks that start after `stop` is requested.
 ///

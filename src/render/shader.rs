@@ -1,5 +1,6 @@
-//! What lights a render's vertices or pixels: GL's lighting equation with its options, or the
-//! glTF metallic-roughness model placed in world coordinates. The passes ([`crate::render::passes`])
+//! What lights a render's vertices or pixels: GL's lighting equation with its options, the
+//! glTF metallic-roughness model or three.js' `MeshPhongMaterial`, both placed in world
+//! coordinates. The passes ([`crate::render::passes`])
 //! ask it for colour planes and for a fragment's colour from them.
 
 use std::mem::MaybeUninit;
@@ -9,10 +10,14 @@ use crate::errors::stop::Stop;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::ValidScene as GltfScene;
+use crate::lighting::mesh_phong::shade::{
+    shade_uninit as shade_mesh_phong, sides, Options as MeshPhongOptions,
+};
 use crate::lighting::metallic_roughness::shade::{shade_uninit as shade_gltf, Options};
 use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::lighting::shade::shade_uninit;
 use crate::numbers::real::Real;
+use crate::threejs::scene::ValidScene as ThreejsScene;
 
 /// The lighting model of one render and what it needs besides the vertices.
 pub enum Shader<'a> {
@@ -31,15 +36,24 @@ pub enum Shader<'a> {
         /// The model matrix and the clamp.
         options: Options,
     },
+    /// three.js' `MeshPhongMaterial`, in world coordinates through the model of `options`,
+    /// with the render's camera in the scene.
+    MeshPhong {
+        /// Lights, material, camera and light convention.
+        scene: ThreejsScene,
+        /// The model matrix and the clamp.
+        options: MeshPhongOptions,
+    },
 }
 
 impl Shader<'_> {
     /// How many colour planes a call writes: GL's outputs (front, back, primary, secondary),
-    /// or one.
+    /// a double-sided `MeshPhongMaterial`'s front and back, or one.
     pub fn outputs(&self) -> usize {
         match self {
             Self::Gl { scene, .. } => scene.output_count(),
             Self::MetallicRoughness { .. } => 1,
+            Self::MeshPhong { scene, .. } => sides(scene),
         }
     }
 
@@ -48,6 +62,7 @@ impl Shader<'_> {
         let clamp = match self {
             Self::Gl { options, .. } => options.clamp,
             Self::MetallicRoughness { options, .. } => options.clamp,
+            Self::MeshPhong { options, .. } => options.clamp,
         };
         clamp == ColorClamp::On
     }
@@ -71,18 +86,23 @@ impl Shader<'_> {
             Self::MetallicRoughness { scene, options } => {
                 shade_gltf(scene, positions, normals, colors, options, out, stop)
             }
+            Self::MeshPhong { scene, options } => {
+                shade_mesh_phong(scene, positions, normals, colors, options, out, stop)
+            }
         }
     }
 
-    /// Whether a texture multiplies the fragments (GL's `GL_MODULATE`), rather than the base
-    /// colour where the model is evaluated (the metallic-roughness model).
+    /// Whether a texture multiplies the fragments (GL's `GL_MODULATE`), rather than a colour
+    /// where the model is evaluated (the metallic-roughness model's base colour,
+    /// `MeshPhongMaterial`'s diffuse colour).
     pub fn modulates(&self) -> bool {
         matches!(self, Self::Gl { .. })
     }
 
     /// A fragment's RGBA from its colours in output order (`colour(k)` is plane k): for GL the
     /// side by the triangle's facing, the primary times `texel` (`GL_MODULATE`) and the colour
-    /// sum ([`fragment`]); else the one plane.
+    /// sum ([`fragment`]); for a double-sided `MeshPhongMaterial` the side by the facing; else
+    /// the one plane.
     pub fn fragment(
         &self,
         front: bool,
@@ -93,6 +113,7 @@ impl Shader<'_> {
         match self {
             Self::Gl { scene, .. } => fragment(scene, front, clamp, texel, colour),
             Self::MetallicRoughness { .. } => colour(0),
+            Self::MeshPhong { scene, .. } => colour(usize::from(!front && sides(scene) == 2)),
         }
     }
 }

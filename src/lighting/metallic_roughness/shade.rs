@@ -11,9 +11,8 @@ use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::ValidScene;
 use crate::lighting::metallic_roughness::kernel::Kernel;
 use crate::lighting::prepare::ColorClamp;
-use crate::lighting::shade::{as_uninit, check_rows, in_float64, run_shader, Inputs};
-use crate::numbers::real::{block_lanes, Real};
-use crate::simd::dispatch::Isa;
+use crate::lighting::shade::{as_uninit, shade_widened, widened_description, Inputs, WidenedModel};
+use crate::numbers::real::Real;
 
 /// What a call's per-vertex colours are.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -86,7 +85,6 @@ pub fn shade_uninit<T: Real>(
     out: &mut [MaybeUninit<T>],
     stop: &Stop,
 ) -> Result<(), Error> {
-    check_rows(positions, normals, colors, 1, out.len())?;
     let inputs = Inputs {
         positions,
         normals,
@@ -94,18 +92,20 @@ pub fn shade_uninit<T: Real>(
     };
     // float32 arithmetic errs up to 3.3e-5 where the model is ill-conditioned (|n·v| near its
     // 0.001 floor, the highlight of roughness 0.04): f32 arrays are computed in f64.
-    if std::mem::size_of::<T>() == 8 {
-        let kernel = Kernel::<T>::new(scene, options)?;
-        return run_shader(&kernel, Isa::detect(), inputs, out, stop);
+    shade_widened(&Model { scene, options }, inputs, 1, out, stop)
+}
+
+/// One call's scene and options, whose kernel [`shade_widened`] builds.
+struct Model<'a> {
+    scene: &'a ValidScene,
+    options: &'a Options,
+}
+
+impl WidenedModel for Model<'_> {
+    type Kernel<T: Real> = Kernel<T>;
+    fn kernel<T: Real>(&self) -> Result<Kernel<T>, Error> {
+        Kernel::new(self.scene, self.options)
     }
-    let kernel = Kernel::<f64>::new(scene, options)?;
-    in_float64(
-        inputs,
-        kernel.plan().positions,
-        out,
-        stop,
-        |wide, dst, stop| run_shader(&kernel, Isa::detect(), wide, dst, stop),
-    )
 }
 
 /// One line saying what [`shade`] computes for `scene` with arrays of `T`: the arithmetic, the
@@ -115,17 +115,8 @@ pub fn shade_uninit<T: Real>(
 /// As [`shade`] for an invalid `model`.
 pub fn describe<T: Real>(scene: &ValidScene, options: &Options) -> Result<String, Error> {
     let kernel = Kernel::<f64>::new(scene, options)?;
-    let isa = Isa::detect();
-    let arrays = if std::mem::size_of::<T>() == 8 {
-        ""
-    } else {
-        " (float32 arrays widened)"
-    };
-    Ok(format!(
-        "metallic-roughness (pyrender's mesh.frag): float64 arithmetic{arrays}, {}, {} vertices \
-         per block; {}",
-        isa.name(),
-        block_lanes::<f64>(isa),
-        kernel.plan()
+    Ok(widened_description::<T>(
+        "metallic-roughness (pyrender's mesh.frag)",
+        kernel.plan(),
     ))
 }
