@@ -21,6 +21,7 @@ mod render;
 mod runtime;
 mod scene;
 mod shading;
+mod threejs;
 
 /// A row-major (4, 4) array (as numpy prints matrices) as a column-major `DMat4`.
 fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
@@ -59,6 +60,8 @@ mod _glshade {
     use super::scene::{Lights, Material, Scene};
     #[pymodule_export]
     use super::shading::{describe, shade, stream};
+    #[pymodule_export]
+    use super::threejs::{describe_threejs, shade_threejs, ThreejsScene};
 
     use pyo3::prelude::*;
 

@@ -9,7 +9,7 @@
 
 from typing import TYPE_CHECKING, Any
 
-from . import glsl, gltf, meshes, presets, relief
+from . import glsl, gltf, meshes, presets, relief, threejs
 from ._area_lights import disc_light, rectangle_light
 from ._camera import Camera
 from ._compare import Comparison, compare
@@ -56,6 +56,7 @@ __all__ = [
     "shade_mesh",
     "srgb_decode",
     "srgb_encode",
+    "threejs",
     "vertex_normals",
 ]
 

@@ -11,11 +11,13 @@ __all__ = [
     "Lights",
     "Material",
     "Scene",
+    "ThreejsScene",
     "__version__",
     "blend",
     "crease_normals",
     "describe",
     "describe_gltf",
+    "describe_threejs",
     "face_normals",
     "hillshade",
     "look_at",
@@ -25,6 +27,7 @@ __all__ = [
     "shade",
     "shade_gltf",
     "shade_normals",
+    "shade_threejs",
     "stream",
     "vertex_normals",
 ]
@@ -142,7 +145,7 @@ def orthographic(
 def render(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],
-    scene: Scene | GltfScene,
+    scene: Scene | GltfScene | ThreejsScene,
     *,
     view: NDArray[np.float64],
     projection: NDArray[np.float64],
@@ -202,6 +205,42 @@ def shade_gltf(
 ) -> NDArray[np.floating[Any]]: ...
 def describe_gltf(
     scene: GltfScene,
+    *,
+    model: NDArray[np.float64] | None,
+    clamp: bool,
+    dtype: str,
+) -> str: ...
+
+@final
+class ThreejsScene:
+    def __new__(
+        cls,
+        *,
+        lights: list[tuple[Any, ...]],
+        color: tuple[float, ...],
+        specular: tuple[float, ...],
+        shininess: float,
+        emissive: tuple[float, ...],
+        emissive_intensity: float,
+        opacity: float,
+        side: str,
+        camera_position: tuple[float, ...],
+        view_direction: tuple[float, ...] | None,
+        physically_correct_lights: bool,
+    ) -> ThreejsScene: ...
+
+def shade_threejs(
+    positions: NDArray[np.floating[Any]],
+    normals: NDArray[np.floating[Any]],
+    scene: ThreejsScene,
+    *,
+    colors: NDArray[np.floating[Any]] | None,
+    model: NDArray[np.float64] | None,
+    clamp: bool,
+    out: NDArray[np.floating[Any]] | None,
+) -> NDArray[np.floating[Any]]: ...
+def describe_threejs(
+    scene: ThreejsScene,
     *,
     model: NDArray[np.float64] | None,
     clamp: bool,

@@ -365,6 +365,15 @@ def color(value: ArrayLike, name: str) -> Float64Array:
     return real(value, name)
 
 
+def vector(value: ArrayLike, name: str, size: int = 3) -> tuple[float, ...]:
+    """`value` (a colour, position or direction, by `color`'s rules) as `size` floats, by
+    name; ranges are the native scene's to check."""
+    a = color(value, name)
+    if a.shape != (size,):
+        raise ValueError(f"{name} must have shape ({size},), got shape {a.shape}")
+    return tuple(float(x) for x in a)
+
+
 def vertex_colors(value: ArrayLike, name: str = "colors") -> NDArray[Any]:
     """Per-vertex colours as an array of real numbers; colour names raise a TypeError that says
     names are not accepted (the values of `color_values` follow)."""

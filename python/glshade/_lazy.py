@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 from ._intake import accuracy_choice
 from ._scene import Scene
 from .gltf import Scene as GltfScene
+from .threejs import Scene as ThreejsScene
 
 __all__ = ["shade_lazily"]
 
@@ -26,7 +27,7 @@ def shade_lazily(
     shade: ShadeFunction,
     positions: ArrayLike | da.Array,
     normals: ArrayLike | da.Array,
-    scene: Scene | GltfScene,
+    scene: Scene | GltfScene | ThreejsScene,
     colors: ArrayLike | da.Array | None,
     shade_kwargs: Mapping[str, Any],
 ) -> da.Array:

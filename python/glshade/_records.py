@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["ValueRecord", "same"]
+__all__ = ["ValueRecord", "same", "set_field"]
 
 
 def same(a: Any, b: Any) -> bool:
@@ -26,6 +26,11 @@ def same(a: Any, b: Any) -> bool:
     if isinstance(a, (list, tuple)) and isinstance(b, (list, tuple)):
         return type(a) is type(b) and len(a) == len(b) and all(map(same, a, b))
     return bool(a == b)
+
+
+def set_field(record: Any, name: str, value: Any) -> None:
+    """Stores a field of a frozen dataclass from its ``__init__`` (normalised values)."""
+    object.__setattr__(record, name, value)
 
 
 def _plain(value: Any) -> Any:

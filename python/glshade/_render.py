@@ -29,6 +29,10 @@ from ._texture import FILTERS, texels, wrap_modes
 from ._transfer import Transfer, apply_transfer, transfer_name
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, ProvokingVertex, Shading, Space
 from .gltf import Scene as GltfScene
+from .threejs import Scene as ThreejsScene
+
+# The triangles three.js discards for each material side (its face culling).
+_THREEJS_CULL: dict[str, Cull | None] = {"front": "back", "back": "front", "double": None}
 
 __all__ = ["render"]
 
@@ -36,8 +40,8 @@ __all__ = ["render"]
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | None = ...,
-    scene: Scene | GltfScene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
+    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -65,8 +69,8 @@ def render(
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | None = ...,
-    scene: Scene | GltfScene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
+    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -94,8 +98,8 @@ def render(
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | None = ...,
-    scene: Scene | GltfScene | Camera | None = ...,
+    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
+    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
     width: int = ...,
@@ -122,8 +126,8 @@ def render(
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | None = None,
-    scene: Scene | GltfScene | Camera | None = None,
+    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = None,
+    scene: Scene | GltfScene | ThreejsScene | Camera | None = None,
     camera: Camera | None = None,
     *,
     width: int = 512,
@@ -166,13 +170,17 @@ def render(
         `transfer`, `clamp` and `depth` apply, and the image is float64.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle; counter-clockwise on screen is the front.
-    scene : Scene or gltf.Scene, optional
+    scene : Scene, gltf.Scene or threejs.Scene, optional
         Lights and viewer in eye coordinates (as for `shade`; see `lights_in`), materials,
         light model. A `glshade.gltf.Scene` lights the mesh with glTF's metallic-roughness
         model as pyrender does: in world coordinates (`lights_in` does not apply), its camera
         position replaced by the camera's eye, vertex colours multiplying the result (the GL
         options `color_material`, `color_material_face`, `normalize` and `rescale_normal` do
-        not apply); ``transfer="gamma2.2"`` then gives pyrender's output. With
+        not apply); ``transfer="gamma2.2"`` then gives pyrender's output. A
+        `glshade.threejs.Scene` lights it with three.js' ``MeshPhongMaterial`` the same way
+        (its camera from the camera: the eye, or an orthographic camera's view direction;
+        vertex colours multiplying the material's colour; a double-sided material's back
+        faces lit with the negated normal); ``transfer="srgb"`` gives three.js' sRGB output. With
         ``two_side``, back-facing triangles get the back colour; with ``separate_specular``,
         the specular colour is added after interpolation and the sum clamped (GL's colour sum).
         None (the default): a white key light from the upper left of the default view and a
@@ -226,7 +234,9 @@ def render(
     rescale_normal : bool
         ``GL_RESCALE_NORMAL``.
     cull : {None, "back", "front", "front_and_back"}
-        Which triangles to discard by their winding on screen (None: none, GL's default).
+        Which triangles to discard by their winding on screen (None: none, GL's default; for a
+        `glshade.threejs.Scene`, its material's ``side``: "front" culls the back, "back" the
+        front, "double" none, as three.js draws).
     background : (3,) or (4,) float
         The clear colour; default transparent black.
     lights_in : {"eye", "world"}
@@ -253,7 +263,9 @@ def render(
         colour, before the separate specular is added (``GL_MODULATE``); with a
         `glshade.gltf.Scene` it is glTF's ``baseColorTexture``: decoded from sRGB and
         multiplied into the base colour wherever the model is evaluated (per pixel with Phong
-        shading, at the vertices with Gouraud, at the provoking vertex with flat shading).
+        shading, at the vertices with Gouraud, at the provoking vertex with flat shading);
+        with a `glshade.threejs.Scene` it is the material's ``map`` (sRGB, as current releases
+        load colour maps), multiplied into its ``color`` the same way.
         Default: a trimesh mesh's own (``visual.kind == "texture"``: its material's
         ``baseColorTexture`` or ``image``, and its ``visual.uv``); False: none.
     uv : (n, 2) float, optional
@@ -334,7 +346,7 @@ def render(
         uv=uv,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
-    if isinstance(given.scene, GltfScene):
+    if isinstance(given.scene, (GltfScene, ThreejsScene)):
         gl_only = {
             "color_material": color_material is None,
             "rescale_normal": rescale_normal is False,
@@ -345,9 +357,11 @@ def render(
             if not default:
                 raise TypeError(
                     f"{name} applies to the GL model (glshade.Scene), not to a "
-                    f"glshade.gltf.Scene (normals are always normalised and vertex colours "
-                    f"multiply the result)"
+                    f"glshade.{type(given.scene).__module__.rsplit('.', 1)[-1]}.Scene (normals "
+                    f"are always normalised and vertex colours multiply a material colour)"
                 )
+    if cull is None and isinstance(given.scene, ThreejsScene):
+        cull = _THREEJS_CULL[given.scene.material.side]
     clear = rgba(background, "background")
     warn_if_bytes(color(background, "background"), "background", "render")
     image, z = _glshade.render(

@@ -18,6 +18,7 @@ from ._scene import Scene
 from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors, mesh_texture
 from ._typing import FloatArray
 from .gltf import Scene as GltfScene
+from .threejs import Scene as ThreejsScene
 
 
 @dataclass
@@ -30,7 +31,7 @@ class RenderInput:
     normals: FloatArray | None
     colors: FloatArray | None
     color_material: str | None
-    scene: Scene | GltfScene
+    scene: Scene | GltfScene | ThreejsScene
     camera: Camera
     uv: FloatArray | None = None
     texture: Any = None
@@ -44,7 +45,7 @@ def is_pair(obj: Any) -> bool:
         and len(obj) == 2
         and np.ndim(obj[0]) == 2
         and np.ndim(obj[1]) == 2
-        and not isinstance(obj[0], (Scene, GltfScene, Camera))
+        and not isinstance(obj[0], (Scene, GltfScene, ThreejsScene, Camera))
     )
 
 
@@ -53,14 +54,16 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     camera)``, ``(mesh, scene, camera)``, ``(mesh, camera)``, ``(vertices, faces, camera)``,
     a mesh being an object with ``.vertices`` and ``.faces`` or a ``(vertices, faces)`` tuple;
     scene and camera None where not given. A TypeError names what does not fit."""
-    if is_pair(vertices) and (faces is None or isinstance(faces, (Scene, GltfScene, Camera))):
+    if is_pair(vertices) and (
+        faces is None or isinstance(faces, (Scene, GltfScene, ThreejsScene, Camera))
+    ):
         if camera is not None:
             raise TypeError(
                 "render((vertices, faces), scene, camera) takes a scene and a camera after the "
                 f"mesh, got a {type(camera).__name__} as well"
             )
         (vertices, faces), scene, camera = vertices, faces, scene
-    if isinstance(faces, (Scene, GltfScene, Camera)):
+    if isinstance(faces, (Scene, GltfScene, ThreejsScene, Camera)):
         if not is_mesh(vertices):
             raise TypeError(
                 "faces is required unless the first argument is a mesh with .vertices and "
@@ -76,10 +79,10 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     if isinstance(scene, Camera) and camera is None:
         scene, camera = None, scene  # render(mesh, camera): the default scene
     order = "the call is render(vertices, faces, scene, camera) or render(mesh, scene, camera)"
-    if scene is not None and not isinstance(scene, (Scene, GltfScene)):
+    if scene is not None and not isinstance(scene, (Scene, GltfScene, ThreejsScene)):
         raise TypeError(
-            f"scene must be a glshade.Scene or glshade.gltf.Scene, or None for the default key "
-            f"light, got "
+            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, or None "
+            f"for the default key light, got "
             f"{type(scene)!r}; {order}"
         )
     if camera is not None and not isinstance(camera, Camera):
@@ -178,7 +181,7 @@ def render_input(
             t = None if t is None else t[f].reshape(-1, 2)
             f = np.arange(3 * len(f), dtype=np.int64).reshape(-1, 3)
     image = None if t is None else texture
-    if isinstance(scene, GltfScene):
+    if isinstance(scene, (GltfScene, ThreejsScene)):
         # World coordinates always; the native render puts the camera at the view's eye.
         return RenderInput(v, f, n, c, None, scene, camera, t, image)
     if scene is None:

@@ -9,7 +9,7 @@ from typing import ParamSpec, TypeVar, cast
 
 from numpy.typing import ArrayLike
 
-from . import _glshade, gltf
+from . import _glshade, gltf, threejs
 from ._intake import accuracy_choice, choice, flag, matrix, optional_choice, out_array, vertices
 from ._scene import Scene
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
@@ -43,7 +43,7 @@ def _names_missing_normals(function: Callable[_P, _R]) -> Callable[_P, _R]:
 def shade(
     positions: ArrayLike,
     normals: ArrayLike,
-    scene: Scene | gltf.Scene,
+    scene: Scene | gltf.Scene | threejs.Scene,
     *,
     modelview: ArrayLike | None = None,
     normalize: bool = False,
@@ -67,12 +67,13 @@ def shade(
         for every position, say), and their common leading shape is the result's. Used as
         given, as in GL: a non-unit normal scales the diffuse and specular terms unless
         `normalize` is set.
-    scene : Scene or gltf.Scene
+    scene : Scene, gltf.Scene or threejs.Scene
         Lights (in eye coordinates), materials and light model. A `glshade.gltf.Scene` lights
         the vertices with glTF's metallic-roughness model as pyrender does instead (world
         coordinates, normals always normalised, `colors` multiplying the result, float64
-        arithmetic whatever the dtype); the options
-        of the GL model (`modelview`, `normalize`, `rescale_normal`, `color_material`,
+        arithmetic whatever the dtype); a `glshade.threejs.Scene` with three.js'
+        ``MeshPhongMaterial`` (the same, `colors` multiplying the material's colour). The
+        options of the GL model (`modelview`, `normalize`, `rescale_normal`, `color_material`,
         `color_material_face`, `strict`) then do not apply and raise `TypeError` if set.
     modelview : (4, 4) float, optional
         An affine modelview matrix M (row-major, as numpy prints it): positions become
@@ -110,9 +111,10 @@ def shade(
     Returns
     -------
     (..., 4) or (k, ..., 4) ndarray of the computation dtype (a dask array for dask inputs)
-        RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` the
-        result has a leading axis of the ``k`` colours named by ``scene.outputs`` (front and
-        back; primary and secondary; or all four). A vertex whose position, normal or colour
+        RGBA clamped to [0, 1]. With ``scene.two_side`` or ``scene.separate_specular`` (or a
+        double-sided ``threejs.MeshPhongMaterial``) the result has a leading axis of the ``k``
+        colours named by ``scene.outputs`` (front and back; primary and secondary; or all
+        four). A vertex whose position, normal or colour
         is NaN or infinite gets NaN; no other vertex is affected.
 
     Notes
@@ -148,8 +150,11 @@ def shade(
     >>> gs.shade(np.zeros((480, 640, 3), np.float32), (0, 0, 1), scene).shape  # one normal for all
     (480, 640, 4)
     """
-    if not isinstance(scene, (Scene, gltf.Scene)):
-        raise TypeError(f"scene must be a glshade.Scene or glshade.gltf.Scene, got {type(scene)!r}")
+    if not isinstance(scene, (Scene, gltf.Scene, threejs.Scene)):
+        raise TypeError(
+            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, got "
+            f"{type(scene)!r}"
+        )
     # Before the dask branch, so a lazy call warns once, here, and its tasks get "fast".
     mode = accuracy_choice(accuracy)
     if any(_is_dask(x) for x in (positions, normals, colors)):
@@ -167,14 +172,14 @@ def shade(
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
-    if isinstance(scene, gltf.Scene):
+    if isinstance(scene, (gltf.Scene, threejs.Scene)):
         gl_options = {
             "modelview": (modelview, None), "normalize": (normalize, False),
             "rescale_normal": (rescale_normal, False), "color_material": (color_material, None),
             "color_material_face": (color_material_face, "front_and_back"),
             "strict": (strict, False),
         }  # fmt: skip
-        return _shade_gltf(positions, normals, scene, colors, mode, clamp, out, gl_options)
+        return _shade_world(positions, normals, scene, colors, mode, clamp, out, gl_options)
     p, n, c = vertices(positions, normals, colors)
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
@@ -198,24 +203,26 @@ def shade(
     return result
 
 
-def _shade_gltf(
+def _shade_world(
     positions: ArrayLike,
     normals: ArrayLike,
-    scene: gltf.Scene,
+    scene: gltf.Scene | threejs.Scene,
     colors: ArrayLike | None,
     accuracy: str,
     clamp: bool,
     out: FloatArray | None,
     gl_options: Mapping[str, tuple[object, object]],
 ) -> FloatArray:
-    """`shade` with the metallic-roughness model; the GL model's options must be left at their
-    defaults. Both accuracies compute in float64 (float32 arrays widened, the result rounded
-    once): the model's float32 arithmetic is not within 1e-5 where it is ill-conditioned."""
+    """`shade` with a world-space model (glTF's metallic-roughness, three.js'
+    ``MeshPhongMaterial``); the GL model's options must be left at their defaults. Both
+    accuracies compute in float64 (float32 arrays widened, the result rounded once): the
+    models' float32 arithmetic is not within 1e-5 where they are ill-conditioned."""
     for name, (value, default) in gl_options.items():
         same = value is default or (isinstance(value, (bool, str)) and value == default)
         if not same:
             raise TypeError(
-                f"{name} applies to the GL model (glshade.Scene), not to a glshade.gltf.Scene "
+                f"{name} applies to the GL model (glshade.Scene), not to a "
+                f"glshade.{type(scene).__module__.rsplit('.', 1)[-1]}.Scene "
                 f"(normals are always normalised, positions are in world coordinates), got "
                 f"{name}={value!r}"
             )
@@ -225,7 +232,11 @@ def _shade_gltf(
     if out is not None:
         out = out_array(out, {"positions": p, "normals": n, "colors": c})
     unclamped = not flag(clamp, "clamp")
-    return _glshade.shade_gltf(
+    if isinstance(scene, gltf.Scene):
+        return _glshade.shade_gltf(
+            p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
+        )
+    return _glshade.shade_threejs(
         p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
     )
 

@@ -17,6 +17,7 @@ from ._shade import shade
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Per, Weighting
 from .gltf import Scene as GltfScene
+from .threejs import Scene as ThreejsScene
 
 __all__ = ["shade_mesh"]
 
@@ -25,7 +26,7 @@ def shade_mesh(
     vertices: Any,
     faces: ArrayLike | None = None,
     *,
-    scene: Scene | GltfScene | None = None,
+    scene: Scene | GltfScene | ThreejsScene | None = None,
     per: Per = "vertex",
     weighting: Weighting = "angle",
     **shade_kwargs: Any,
@@ -39,7 +40,7 @@ def shade_mesh(
         ``.faces`` (a ``trimesh.Trimesh``) or a ``(vertices, faces)`` tuple.
     faces : (m, 3) int, any integer dtype
         Vertex indices of each triangle, counter-clockwise seen from the front.
-    scene : Scene or gltf.Scene, optional
+    scene : Scene, gltf.Scene or threejs.Scene, optional
         What lights the mesh, in the coordinates it is shaded in (the mesh's own, or eye
         coordinates with a ``modelview``). None (the default): the default scene of `render`
         placed for this mesh: its key light and fill (directional, from the upper left and
@@ -85,9 +86,10 @@ def shade_mesh(
             "argument, gs.shade_mesh(mesh, scene=scene) or gs.shade_mesh(vertices, faces, "
             "scene=scene)"
         )
-    if scene is not None and not isinstance(scene, (Scene, GltfScene)):
+    if scene is not None and not isinstance(scene, (Scene, GltfScene, ThreejsScene)):
         raise TypeError(
-            f"scene must be a glshade.Scene or glshade.gltf.Scene, or None for the default "
+            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, or "
+            f"None for the default "
             f"lights, got {type(scene)!r}"
         )
     where = one_of(per, "per", ("vertex", "face"))

@@ -32,24 +32,11 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import color, number
-from ._records import ValueRecord
+from ._intake import color, number, vector
+from ._records import ValueRecord, set_field
 from ._typing import Float64Array
 
 __all__ = ["DirectionalLight", "Material", "PointLight", "Scene", "SpotLight"]
-
-
-def _vector(value: ArrayLike, name: str, size: int = 3) -> tuple[float, ...]:
-    """`value` as `size` finite-or-not floats (the native scene checks ranges), by name."""
-    a = color(value, name)
-    if a.shape != (size,):
-        raise ValueError(f"{name} must have shape ({size},), got shape {a.shape}")
-    return tuple(float(x) for x in a)
-
-
-def _set(record: Any, name: str, value: Any) -> None:
-    """Stores a normalised field of a frozen record."""
-    object.__setattr__(record, name, value)
 
 
 @dataclasses.dataclass(frozen=True, eq=False, init=False)
@@ -94,10 +81,10 @@ class Material(ValueRecord):
         base = color(base_color, "base_color")
         if base.shape not in ((3,), (4,)):
             raise ValueError(f"base_color must have shape (3,) or (4,), got shape {base.shape}")
-        _set(self, "base_color", (*(float(x) for x in base), 1.0)[:4])
-        _set(self, "metallic", number(metallic, "metallic"))
-        _set(self, "roughness", number(roughness, "roughness"))
-        _set(self, "emissive", _vector(emissive, "emissive"))
+        set_field(self, "base_color", (*(float(x) for x in base), 1.0)[:4])
+        set_field(self, "metallic", number(metallic, "metallic"))
+        set_field(self, "roughness", number(roughness, "roughness"))
+        set_field(self, "emissive", vector(emissive, "emissive"))
         # The native scene checks ranges; checking here too names the value at its source.
         _native_scene([], self, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
@@ -127,9 +114,9 @@ class DirectionalLight(ValueRecord):
         intensity: float = 1.0,
         direction: ArrayLike = (0.0, 0.0, -1.0),
     ) -> None:
-        _set(self, "color", _vector(color, "color"))
-        _set(self, "intensity", number(intensity, "intensity"))
-        _set(self, "direction", _vector(direction, "direction"))
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "direction", vector(direction, "direction"))
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -158,9 +145,9 @@ class PointLight(ValueRecord):
         intensity: float = 1.0,
         position: ArrayLike = (0.0, 0.0, 0.0),
     ) -> None:
-        _set(self, "color", _vector(color, "color"))
-        _set(self, "intensity", number(intensity, "intensity"))
-        _set(self, "position", _vector(position, "position"))
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "position", vector(position, "position"))
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -203,12 +190,12 @@ class SpotLight(ValueRecord):
         inner_cone_angle: float = 0.0,
         outer_cone_angle: float = math.pi / 4,
     ) -> None:
-        _set(self, "color", _vector(color, "color"))
-        _set(self, "intensity", number(intensity, "intensity"))
-        _set(self, "position", _vector(position, "position"))
-        _set(self, "direction", _vector(direction, "direction"))
-        _set(self, "inner_cone_angle", number(inner_cone_angle, "inner_cone_angle"))
-        _set(self, "outer_cone_angle", number(outer_cone_angle, "outer_cone_angle"))
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "position", vector(position, "position"))
+        set_field(self, "direction", vector(direction, "direction"))
+        set_field(self, "inner_cone_angle", number(inner_cone_angle, "inner_cone_angle"))
+        set_field(self, "outer_cone_angle", number(outer_cone_angle, "outer_cone_angle"))
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -290,8 +277,8 @@ class Scene:
         if not isinstance(material, Material):
             raise TypeError(f"material must be a glshade.gltf.Material, got {type(material)!r}")
         self._material = material
-        self._ambient_light = _vector(ambient_light, "ambient_light")
-        self._camera_position = _vector(camera_position, "camera_position")
+        self._ambient_light = vector(ambient_light, "ambient_light")
+        self._camera_position = vector(camera_position, "camera_position")
         self._native = _native_scene(
             list(self._lights), material, self._ambient_light, self._camera_position
         )

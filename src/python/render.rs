@@ -11,6 +11,7 @@ use super::arrays::{float_of, read, rows, vertex_colors, zeros, Float};
 use super::gltf::GltfScene;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
+use super::threejs::ThreejsScene;
 use super::{faces, matrix};
 use crate::gl::material::ColorMaterial;
 use crate::lighting::prepare::ColorClamp;
@@ -20,15 +21,17 @@ use crate::render::mesh::{Mesh, Textured};
 use crate::render::passes::Provoking;
 use crate::render::raster::{Cull, Viewport};
 use crate::render::texture::{Filter, Texture, Wrap};
-use crate::render::{render_metallic_roughness, RenderOptions, Shading};
+use crate::render::{render_mesh_phong, render_metallic_roughness, RenderOptions, Shading};
 
-/// The scene of a render: GL's or glTF's metallic-roughness one.
+/// The scene of a render: GL's, glTF's metallic-roughness one or three.js'.
 #[derive(FromPyObject)]
 pub enum AnyScene<'py> {
     /// `glshade.Scene`'s native scene.
     Gl(Bound<'py, Scene>),
     /// `glshade.gltf.Scene`'s native scene.
     Gltf(Bound<'py, GltfScene>),
+    /// `glshade.threejs.Scene`'s native scene.
+    Threejs(Bound<'py, ThreejsScene>),
 }
 
 /// A render's texture as the binding takes it: float32 RGBA texels (height, width, 4), the
@@ -102,6 +105,12 @@ fn render_typed<'py, T: Element + Real>(
                 let scene = &scene.get().state;
                 run(py, true, |stop| {
                     render_metallic_roughness(scene, &mesh, camera, options, image, depth, stop)
+                })?;
+            }
+            AnyScene::Threejs(scene) => {
+                let scene = &scene.get().state;
+                run(py, true, |stop| {
+                    render_mesh_phong(scene, &mesh, camera, options, image, depth, stop)
                 })?;
             }
         }

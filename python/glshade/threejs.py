@@ -1,0 +1,509 @@
+"""three.js' ``MeshPhongMaterial`` and its lights, as three.js' shaders evaluate them: a
+material, lights and a scene that `glshade.shade` and `glshade.render` take in place of a
+`glshade.Scene`.
+
+>>> import numpy as np, glshade as gs
+>>> scene = gs.threejs.Scene(
+...     lights=[gs.threejs.DirectionalLight(intensity=2.0, position=(0, 0, 1))],
+...     material=gs.threejs.MeshPhongMaterial(color=(0.8, 0.2, 0.2)),
+...     camera_position=(0, 0, 5),
+... )
+>>> gs.shade(np.zeros((1, 3)), np.array([[0, 0, 1.0]]), scene).round(4)
+array([[0.6795, 0.2975, 0.2975, 1.    ]])
+
+The model is release 111's ``meshphong_frag`` (Debian's ``libjs-three``) without maps, term
+by term: Lambert's diffuse ``color / π``, the normalised Blinn-Phong specular
+``(shininess/2 + 1)/(4π) · (n·h)^shininess`` times Schlick's Fresnel on the ``specular``
+colour, every direct light weighted by ``saturate(n·l)``, three.js' distance falloff and
+penumbra smoothstep, ambient and hemisphere lights, emission. With
+``physically_correct_lights=True`` (the default) it is also the current release's model;
+``False`` is r111's default "legacy" lights (every irradiance times π, a decay only within a
+finite ``distance``). The result is linear; three.js' sRGB output is
+``transfer="srgb"`` in `glshade.render`. The documentation's page "three.js MeshPhongMaterial"
+(docs/pages/guide/threejs.md) lists every term and its source line.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from collections.abc import Iterable
+from typing import Any, Literal
+
+import numpy as np
+from numpy.typing import ArrayLike
+
+from . import _glshade
+from ._intake import number, one_of, vector
+from ._records import ValueRecord, set_field
+from ._typing import Float64Array
+
+__all__ = [
+    "AmbientLight",
+    "DirectionalLight",
+    "HemisphereLight",
+    "MeshPhongMaterial",
+    "PointLight",
+    "Scene",
+    "SpotLight",
+]
+
+Side = Literal["front", "back", "double"]
+_WHITE = (1.0, 1.0, 1.0)
+_ZERO = (0.0, 0.0, 0.0)
+_UP = (0.0, 1.0, 0.0)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class MeshPhongMaterial(ValueRecord):
+    """three.js' ``MeshPhongMaterial`` without maps, with its defaults.
+
+    Parameters
+    ----------
+    color : (3,) float >= 0, default (1, 1, 1)
+        The diffuse colour, linear RGB (three.js' ``color``; with three.js' colour management
+        on, as in current releases, a hex or CSS colour is sRGB: decode it first). Vertex
+        colours and `render`'s texture multiply it.
+    specular : (3,) float >= 0, default (17/255, 17/255, 17/255)
+        Schlick's f0 (three.js' ``specular``: 0x111111 as r111 reads it; where colour
+        management decodes hex colours from sRGB, as current releases do, 0x111111 is
+        0.0056).
+    shininess : float >= 0, default 30
+        The Blinn-Phong exponent; at least 1e-4, as three.js passes it to its shader (so
+        ``(n·h)^shininess`` is 0 at n·h = 0).
+    emissive : (3,) float >= 0, default (0, 0, 0)
+        Emitted linear RGB.
+    emissive_intensity : float >= 0, default 1
+        ``emissiveIntensity``, multiplies `emissive`.
+    opacity : float in [0, 1], default 1
+        The output's alpha (times a vertex colour's alpha).
+    side : {"front", "back", "double"}, default "front"
+        three.js' ``side``: "back" lights the negated normal; "double" gives two colours, the
+        back with the negated normal (`shade` returns (2, ..., 4), front then back; `render`
+        picks by facing). `render` culls by it unless given ``cull=``.
+
+    Raises
+    ------
+    TypeError
+        For a non-numeric value.
+    ValueError
+        For a wrong shape or a value outside its range.
+    """
+
+    color: tuple[float, ...]
+    specular: tuple[float, ...]
+    shininess: float
+    emissive: tuple[float, ...]
+    emissive_intensity: float
+    opacity: float
+    side: Side
+
+    def __init__(
+        self,
+        color: ArrayLike = _WHITE,
+        specular: ArrayLike = (17 / 255, 17 / 255, 17 / 255),
+        shininess: float = 30.0,
+        emissive: ArrayLike = _ZERO,
+        emissive_intensity: float = 1.0,
+        opacity: float = 1.0,
+        side: Side = "front",
+    ) -> None:
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "specular", vector(specular, "specular"))
+        set_field(self, "shininess", number(shininess, "shininess"))
+        set_field(self, "emissive", vector(emissive, "emissive"))
+        set_field(self, "emissive_intensity", number(emissive_intensity, "emissive_intensity"))
+        set_field(self, "opacity", number(opacity, "opacity"))
+        set_field(self, "side", one_of(side, "side", ("front", "back", "double")))
+        # The native scene checks ranges; checking here too names the value at its source.
+        _native_scene([], self, _ZERO, None, True)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class AmbientLight(ValueRecord):
+    """three.js' ``AmbientLight``: irradiance ``color * intensity`` from everywhere (times π
+    with legacy lights), lighting the diffuse colour only.
+
+    Parameters
+    ----------
+    color : (3,) float >= 0, default (1, 1, 1)
+        Linear RGB.
+    intensity : float >= 0, default 1
+    """
+
+    color: tuple[float, ...]
+    intensity: float
+
+    def __init__(self, color: ArrayLike = _WHITE, intensity: float = 1.0) -> None:
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class HemisphereLight(ValueRecord):
+    """three.js' ``HemisphereLight``: irradiance ``mix(ground_color, sky_color, 0.5·n·d +
+    0.5) * intensity`` with d the unit `position` (times π with legacy lights), lighting the
+    diffuse colour only.
+
+    Parameters
+    ----------
+    sky_color : (3,) float >= 0, default (1, 1, 1)
+        The light's ``color`` (the constructor's ``skyColor``), linear RGB.
+    ground_color : (3,) float >= 0, default (1, 1, 1)
+        ``groundColor``, linear RGB.
+    intensity : float >= 0, default 1
+    position : (3,) float, default (0, 1, 0)
+        Towards the sky, nonzero (three.js normalises the light's position).
+    """
+
+    sky_color: tuple[float, ...]
+    ground_color: tuple[float, ...]
+    intensity: float
+    position: tuple[float, ...]
+
+    def __init__(
+        self,
+        sky_color: ArrayLike = _WHITE,
+        ground_color: ArrayLike = _WHITE,
+        intensity: float = 1.0,
+        position: ArrayLike = _UP,
+    ) -> None:
+        set_field(self, "sky_color", vector(sky_color, "sky_color"))
+        set_field(self, "ground_color", vector(ground_color, "ground_color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "position", vector(position, "position"))
+        _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class DirectionalLight(ValueRecord):
+    """three.js' ``DirectionalLight``: parallel light from `position` towards `target`.
+
+    Parameters
+    ----------
+    color : (3,) float >= 0, default (1, 1, 1)
+        Linear RGB.
+    intensity : float >= 0, default 1
+    position : (3,) float, default (0, 1, 0)
+        The light's position; only ``position - target`` matters (nonzero).
+    target : (3,) float, default (0, 0, 0)
+        ``target.position``.
+    """
+
+    color: tuple[float, ...]
+    intensity: float
+    position: tuple[float, ...]
+    target: tuple[float, ...]
+
+    def __init__(
+        self,
+        color: ArrayLike = _WHITE,
+        intensity: float = 1.0,
+        position: ArrayLike = _UP,
+        target: ArrayLike = _ZERO,
+    ) -> None:
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "position", vector(position, "position"))
+        set_field(self, "target", vector(target, "target"))
+        _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class PointLight(ValueRecord):
+    """three.js' ``PointLight``.
+
+    Parameters
+    ----------
+    color : (3,) float >= 0, default (1, 1, 1)
+        Linear RGB.
+    intensity : float >= 0, default 1
+    distance : float >= 0, default 0
+        The reach: physically correct lights fade as ``saturate(1 - (d/distance)^4)^2``,
+        legacy lights as ``saturate(1 - d/distance)^decay``; 0 is unlimited.
+    decay : float >= 0, default 2
+        Physically correct lights fall off as ``1 / max(d^decay, 0.01)`` (the current
+        release's default 2; r111's default was 1).
+    position : (3,) float, default (0, 0, 0)
+    """
+
+    color: tuple[float, ...]
+    intensity: float
+    distance: float
+    decay: float
+    position: tuple[float, ...]
+
+    def __init__(
+        self,
+        color: ArrayLike = _WHITE,
+        intensity: float = 1.0,
+        distance: float = 0.0,
+        decay: float = 2.0,
+        position: ArrayLike = _ZERO,
+    ) -> None:
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "distance", number(distance, "distance"))
+        set_field(self, "decay", number(decay, "decay"))
+        set_field(self, "position", vector(position, "position"))
+        _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
+
+
+@dataclasses.dataclass(frozen=True, eq=False, init=False)
+class SpotLight(ValueRecord):
+    """three.js' ``SpotLight``: a point light within the cone from `position` towards `target`:
+    0 unless cos θ > cos(angle), then ``smoothstep(cos(angle), cos(angle·(1 - penumbra)),
+    cos θ)`` (a step for penumbra 0).
+
+    Parameters
+    ----------
+    color : (3,) float >= 0, default (1, 1, 1)
+        Linear RGB.
+    intensity : float >= 0, default 1
+    distance : float >= 0, default 0
+        As `PointLight`'s.
+    angle : float, default pi/3
+        Radians in (0, pi/2].
+    penumbra : float in [0, 1], default 0
+    decay : float >= 0, default 2
+        As `PointLight`'s.
+    position : (3,) float, default (0, 1, 0)
+    target : (3,) float, default (0, 0, 0)
+        The cone's axis is ``target - position`` (nonzero).
+    """
+
+    color: tuple[float, ...]
+    intensity: float
+    distance: float
+    angle: float
+    penumbra: float
+    decay: float
+    position: tuple[float, ...]
+    target: tuple[float, ...]
+
+    def __init__(
+        self,
+        color: ArrayLike = _WHITE,
+        intensity: float = 1.0,
+        distance: float = 0.0,
+        angle: float = math.pi / 3,
+        penumbra: float = 0.0,
+        decay: float = 2.0,
+        position: ArrayLike = _UP,
+        target: ArrayLike = _ZERO,
+    ) -> None:
+        set_field(self, "color", vector(color, "color"))
+        set_field(self, "intensity", number(intensity, "intensity"))
+        set_field(self, "distance", number(distance, "distance"))
+        set_field(self, "angle", number(angle, "angle"))
+        set_field(self, "penumbra", number(penumbra, "penumbra"))
+        set_field(self, "decay", number(decay, "decay"))
+        set_field(self, "position", vector(position, "position"))
+        set_field(self, "target", vector(target, "target"))
+        _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
+
+
+Light = AmbientLight | HemisphereLight | DirectionalLight | PointLight | SpotLight
+_KINDS = (AmbientLight, HemisphereLight, DirectionalLight, PointLight, SpotLight)
+
+
+def _away(position: tuple[float, ...], target: tuple[float, ...]) -> tuple[float, ...]:
+    """``position - target``, the direction `WebGLLights` gives directional and spot lights."""
+    return tuple(p - t for p, t in zip(position, target, strict=True))
+
+
+def _row(light: Light) -> tuple[Any, ...]:
+    """A light as the native scene takes it: kind, colour, intensity, position, direction,
+    ground colour, distance, decay, angle, penumbra."""
+    if isinstance(light, AmbientLight):
+        return ("ambient", light.color, light.intensity, _ZERO, _ZERO, _ZERO, 0.0, 0.0, 0.0, 0.0)
+    if isinstance(light, HemisphereLight):
+        return (
+            "hemisphere", light.sky_color, light.intensity, _ZERO, light.position,
+            light.ground_color, 0.0, 0.0, 0.0, 0.0,
+        )  # fmt: skip
+    if isinstance(light, DirectionalLight):
+        away = _away(light.position, light.target)
+        return ("directional", light.color, light.intensity, _ZERO, away, _ZERO, 0, 0, 0, 0)
+    if isinstance(light, PointLight):
+        return (
+            "point", light.color, light.intensity, light.position, _ZERO, _ZERO,
+            light.distance, light.decay, 0.0, 0.0,
+        )  # fmt: skip
+    return (
+        "spot", light.color, light.intensity, light.position,
+        _away(light.position, light.target), _ZERO, light.distance, light.decay, light.angle,
+        light.penumbra,
+    )  # fmt: skip
+
+
+def _native_scene(
+    lights: list[Light],
+    material: MeshPhongMaterial,
+    camera: tuple[float, ...],
+    view_direction: tuple[float, ...] | None,
+    physical: bool,
+) -> _glshade.ThreejsScene:
+    return _glshade.ThreejsScene(
+        lights=[_row(light) for light in lights],
+        color=material.color,
+        specular=material.specular,
+        shininess=material.shininess,
+        emissive=material.emissive,
+        emissive_intensity=material.emissive_intensity,
+        opacity=material.opacity,
+        side=material.side,
+        camera_position=camera,
+        view_direction=view_direction,
+        physically_correct_lights=physical,
+    )
+
+
+class Scene:
+    """Lights, one ``MeshPhongMaterial``, the camera and the renderer's light convention, in
+    world coordinates: what three.js' shader reads for one mesh.
+
+    Parameters
+    ----------
+    lights : iterable of AmbientLight, HemisphereLight, DirectionalLight, PointLight or SpotLight
+        three.js sums point, spot and directional lights (in that order), then the ambient
+        and hemisphere lights.
+    material : MeshPhongMaterial, optional
+        Default: three.js' default material.
+    camera_position : (3,) float, default (0, 0, 0)
+        Where a perspective camera is (the view vector points there). `glshade.render` takes
+        it from the camera instead.
+    view_direction : (3,) float, optional
+        For an orthographic camera: the view vector of every vertex, the camera's +z axis
+        (towards the viewer), as the shader's ``isOrthographic`` branch has it; replaces
+        `camera_position`. `glshade.render` sets it from an orthographic camera.
+    physically_correct_lights : bool, default True
+        ``WebGLRenderer.physicallyCorrectLights``: True is the current release's only
+        convention; False is r111's default (every irradiance times π; decay only within a
+        finite distance).
+
+    Raises
+    ------
+    TypeError
+        For a light or material of another type, or a non-numeric value.
+    ValueError
+        For a value outside its range.
+    """
+
+    __slots__ = ("_camera_position", "_lights", "_material", "_native", "_physical", "_view")
+
+    def __init__(
+        self,
+        lights: Iterable[Light] = (),
+        material: MeshPhongMaterial | None = None,
+        *,
+        camera_position: ArrayLike = _ZERO,
+        view_direction: ArrayLike | None = None,
+        physically_correct_lights: bool = True,
+    ) -> None:
+        self._lights = tuple(lights)
+        for i, light in enumerate(self._lights):
+            if not isinstance(light, _KINDS):
+                raise TypeError(
+                    f"lights[{i}] must be a glshade.threejs AmbientLight, HemisphereLight, "
+                    f"DirectionalLight, PointLight or SpotLight, got {type(light)!r}"
+                )
+        material = MeshPhongMaterial() if material is None else material
+        if not isinstance(material, MeshPhongMaterial):
+            raise TypeError(
+                f"material must be a glshade.threejs.MeshPhongMaterial, got {type(material)!r}"
+            )
+        if not isinstance(physically_correct_lights, (bool, np.bool_)):
+            raise TypeError(
+                f"physically_correct_lights must be True or False, got "
+                f"{physically_correct_lights!r}"
+            )
+        self._material = material
+        self._camera_position = vector(camera_position, "camera_position")
+        self._view = None if view_direction is None else vector(view_direction, "view_direction")
+        self._physical = bool(physically_correct_lights)
+        self._native = _native_scene(
+            list(self._lights), material, self._camera_position, self._view, self._physical
+        )
+
+    @property
+    def outputs(self) -> tuple[str, ...]:
+        """The names of the colours `shade` returns: ("color",), or ("front", "back") for a
+        double-sided material."""
+        return ("front", "back") if self._material.side == "double" else ("color",)
+
+    @property
+    def lights(self) -> tuple[Light, ...]:
+        """The lights, as given."""
+        return self._lights
+
+    @property
+    def material(self) -> MeshPhongMaterial:
+        """The material."""
+        return self._material
+
+    @property
+    def camera_position(self) -> Float64Array:
+        """(3,) Where the camera is."""
+        return np.array(self._camera_position)
+
+    @property
+    def view_direction(self) -> Float64Array | None:
+        """(3,) The orthographic view direction, or None for a perspective camera."""
+        return None if self._view is None else np.array(self._view)
+
+    @property
+    def physically_correct_lights(self) -> bool:
+        """three.js' ``physicallyCorrectLights``."""
+        return self._physical
+
+    def plan(self, dtype: Any = np.float32, *, clamp: bool = True) -> str:
+        """One line saying what `glshade.shade` computes for this scene with arrays of `dtype`:
+        the arithmetic (float64, float32 arrays widened), the instruction set, the lanes per
+        block, and which lights and terms run (a light of zero intensity or colour is skipped;
+        positions are read only for point and spot lights, or a perspective camera's view
+        vector).
+        """
+        name = np.dtype(dtype).name
+        if name not in ("float32", "float64"):
+            raise ValueError(f"dtype must be float32 or float64, got {name}")
+        return str(_glshade.describe_threejs(self._native, model=None, clamp=clamp, dtype=name))
+
+    def __repr__(self) -> str:
+        view = "" if self._view is None else f", view_direction={self._view}"
+        return (
+            f"threejs.Scene(lights={list(self._lights)!r}, material={self._material!r}, "
+            f"camera_position={self._camera_position}{view}, "
+            f"physically_correct_lights={self._physical})"
+        )
+
+    def _key(self) -> tuple[Any, ...]:
+        return (self._lights, self._material, self._camera_position, self._view, self._physical)
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Scene):
+            return NotImplemented
+        return self._key() == other._key()
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __reduce__(self) -> tuple[Any, ...]:
+        return (_rebuilt, self._key())
+
+
+def _rebuilt(
+    lights: tuple[Light, ...],
+    material: MeshPhongMaterial,
+    camera: Any,
+    view: Any,
+    physical: bool,
+) -> Scene:
+    """A pickled scene, rebuilt."""
+    return Scene(
+        lights,
+        material,
+        camera_position=camera,
+        view_direction=view,
+        physically_correct_lights=physical,
+    )
