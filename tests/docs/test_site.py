@@ -21,14 +21,13 @@ from typing import Any
 from urllib.parse import unquote, urljoin, urlsplit
 
 import pytest
-from conftest import require, unavailable
+from conftest import require
+
+from support.chromium import chromium
 
 from .pages import CONFIG
 
 pytestmark = [pytest.mark.docs, pytest.mark.subprocess]
-
-CHROMIUM = ("/usr/bin/chromium", "/usr/bin/chromium-browser")
-CHROMEDRIVER = ("/usr/bin/chromedriver", "/usr/lib/chromium/chromedriver")
 
 
 @pytest.fixture(scope="module")
@@ -68,24 +67,8 @@ class _QuietHandler(http.server.SimpleHTTPRequestHandler):
 @pytest.fixture(scope="module")
 def browser() -> Iterator[Any]:
     """Headless Chromium driven by selenium, keeping the console's messages."""
-    webdriver: Any = require("selenium.webdriver")
-    binary = next((path for path in CHROMIUM if Path(path).exists()), None)
-    driver_path = next((path for path in CHROMEDRIVER if Path(path).exists()), None)
-    if binary is None or driver_path is None:
-        unavailable(
-            "Chromium or chromedriver is not installed (apt-get install chromium chromium-driver)"
-        )
-    options = webdriver.ChromeOptions()
-    options.binary_location = binary
-    for argument in ("--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage"):
-        options.add_argument(argument)
-    options.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(options=options, service=webdriver.ChromeService(driver_path))
-    driver.set_page_load_timeout(60)
-    try:
+    with chromium("--disable-gpu") as driver:
         yield driver
-    finally:
-        driver.quit()
 
 
 def pages(site: Path) -> list[str]:
