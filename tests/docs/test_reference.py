@@ -18,6 +18,7 @@ MODULES = {
     "glshade.presets": "presets.md",
     "glshade.glsl": "glsl.md",
     "glshade.gltf": "gltf.md",
+    "glshade.threejs": "threejs.md",
     "glshade.relief": "relief.md",
     "glshade.dask": "dask.md",
     "glshade.lab.report": "lab.md",
@@ -26,7 +27,17 @@ MODULES = {
     "glshade.lab.machine": "lab.md",
 }
 # Names the reference gives a page or a sentence of their own rather than an entry.
-ELSEWHERE = {"glsl", "gltf", "relief", "meshes", "presets", "__version__", "report", "Report"}
+ELSEWHERE = {
+    "glsl",
+    "gltf",
+    "threejs",
+    "relief",
+    "meshes",
+    "presets",
+    "__version__",
+    "report",
+    "Report",
+}
 
 
 def documented(page: str, module: str) -> set[str]:
