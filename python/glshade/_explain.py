@@ -89,7 +89,7 @@ def explain(
         As for `render`: an object with ``.vertices`` and ``.faces``, or a ``(vertices,
         faces)`` tuple.
     scene : Scene, optional
-        The scene the picture was meant to show; None: `render`'s default scene.
+        The scene the picture was meant to show (GL's model); None: `render`'s default scene.
     camera : Camera, optional
         As for `render`.
     **render_options
@@ -106,13 +106,20 @@ def explain(
     Raises
     ------
     ValueError, TypeError
-        As `render` raises them, or for an image that is not (height, width, 3 or 4).
+        As `render` raises them, for an image that is not (height, width, 3 or 4), or (a
+        TypeError) for a scene that is not a `glshade.Scene` (the glTF and three.js models
+        have no switches here).
     """
     target = np.asarray(image)
     if target.ndim != 3 or target.shape[2] not in (3, 4):
         raise ValueError(f"image must have shape (height, width, 3 or 4), got {target.shape}")
     target = target / 255.0 if target.dtype == np.uint8 else target.astype(np.float64)
     height, width = target.shape[:2]
+    if scene is not None and not isinstance(scene, Scene):
+        raise TypeError(
+            f"scene must be a glshade.Scene or None: explain searches the switches of GL's "
+            f"equation (a glTF or three.js model has conventions of its own), got {type(scene)!r}"
+        )
     if scene is None:
         from ._framing import default_scene
 

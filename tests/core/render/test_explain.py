@@ -147,3 +147,5 @@ def test_uint8_images_and_bad_shapes() -> None:
     assert e.switches == {"transfer": "srgb"} and e.residual_after < 1 / 255
     with pytest.raises(ValueError, match="image must have shape"):
         gs.explain(np.zeros((4, 4)), (V, F), SCENE, CAMERA)
+    with pytest.raises(TypeError, match=r"scene must be a glshade.Scene or None: explain"):
+        gs.explain(np.zeros((4, 4, 4)), (V, F), gs.threejs.Scene(), CAMERA)
