@@ -325,7 +325,7 @@ def _row(light: Light) -> tuple[Any, ...]:
         )  # fmt: skip
     if isinstance(light, DirectionalLight):
         away = _away(light.position, light.target)
-        return ("directional", light.color, light.intensity, _ZERO, away, _ZERO, 0, 0, 0, 0)
+        return ("directional", light.color, light.intensity, _ZERO, away, _ZERO, 0.0, 0.0, 0.0, 0.0)
     if isinstance(light, PointLight):
         return (
             "point", light.color, light.intensity, light.position, _ZERO, _ZERO,

@@ -234,3 +234,21 @@ def test_render_culls_by_side_and_lights_the_back_of_double_sided_materials() ->
     # Pixel (8, 8) of 17 is the image's centre, the square's: the same point, within the
     # interpolation's rounding.
     np.testing.assert_allclose(image[8, 8, :3], back[:3], atol=1e-6)
+
+
+def test_render_gives_an_orthographic_camera_one_view_direction() -> None:
+    """Under a directional light, a flat square seen by an orthographic camera has one colour,
+    `shade`'s with the camera's +z axis as `view_direction` (three.js' ``isOrthographic``); a
+    perspective camera's highlight moves across it."""
+    v = np.array([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0.0]])
+    f = np.array([[0, 1, 2], [0, 2, 3]])
+    scene = t.Scene([t.DirectionalLight(position=(0.3, 0.2, 1))], t.MeshPhongMaterial(shininess=5))
+    eye = np.array([0.5, 0.4, 3.0])
+    camera = gs.Camera.look_at_orthographic(eye=eye, target=(0, 0, 0), height=1.5)
+    image = np.asarray(gs.render(v, f, scene, camera, width=16, height=16))
+    axis = t.Scene(scene.lights, scene.material, view_direction=eye)
+    want = gs.shade(np.zeros((1, 3)), [[0, 0, 1.0]], axis)[0]
+    np.testing.assert_allclose(image.reshape(-1, 4), np.broadcast_to(want, (256, 4)), atol=1e-12)
+    perspective = gs.Camera.look_at(eye=eye, target=(0, 0, 0), fovy=30)
+    image = np.asarray(gs.render(v, f, scene, perspective, width=16, height=16))
+    assert np.ptp(image[..., 0]) > 1e-3
