@@ -22,9 +22,13 @@ pub trait Real: Float + Elementary {
 }
 
 /// The lanes of one block of `T` under instruction set `S` ([`InstructionSet::Block`]): two
-/// registers with AVX-512, four with AVX2 and SSE2 (measured on Zen 4, 2026-12-02, one thread:
+/// registers with AVX-512 and AVX2, four with SSE2. Measured, one thread: on Zen 4, 2026-12-02,
 /// with AVX-512 two ran 1.2 to 1.4 times as fast as one in the shapes' kernels and as fast as
-/// four in the general one, in half the code; with AVX2 four kept 8 lights 10 to 15% ahead).
+/// four in the general one, in half the code. AVX2 runs where AVX-512 is missing: on Zen 2,
+/// 2026-12-05, two ran the seven bench scenes 0.99 to 1.44 times as fast as four in float32 and
+/// float64 (four spilled most values to the stack: 16 registers of 8 lanes hold little of a
+/// 32-lane block) and 1.2 to 1.4 times as fast as one; Zen 4's AVX2 path, which that machine
+/// does not run, had four 10 to 15% ahead on 8 lights.
 pub type BlockLanes<T, S> = <S as InstructionSet>::Block<<T as Real>::Vector<S>>;
 
 impl Real for f32 {

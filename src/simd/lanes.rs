@@ -63,7 +63,7 @@ pub(crate) struct Avx2;
 impl InstructionSet for Avx2 {
     type F32 = x86::F32x8;
     type F64 = x86::F64x4;
-    type Block<V: Lanes> = Quad<V>;
+    type Block<V: Lanes> = Pair<V>;
 }
 
 /// AVX-512 F, BW, DQ and VL.
