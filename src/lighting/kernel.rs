@@ -21,7 +21,7 @@ use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
 use crate::lighting::plan::{LightKind, Plan};
 use crate::lighting::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
-use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Viewer};
+use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Transform, Viewer};
 use crate::lighting::shape::{flag, General, Shape};
 use crate::numbers::real::Real;
 use crate::simd::float::{ldexp, Float};
@@ -151,6 +151,33 @@ pub struct Block<V: Lanes> {
     pub normals: V3<V>,
     /// RGBA vertex colours for `GL_COLOR_MATERIAL`.
     pub colors: Option<[V; 4]>,
+}
+
+/// The world-space positions and normals of a block for the models outside GL state (glTF's,
+/// three.js'), moved by the model `transform` if any (positions only when `positions` are
+/// read), and the lanes whose inputs are all finite (positions only when read).
+#[inline(always)]
+pub(crate) fn world_inputs<T: Real, V: Lanes<T = T>>(
+    input: &Block<V>,
+    transform: Option<&Transform<T>>,
+    positions: bool,
+) -> (V3<V>, V3<V>, V::Mask) {
+    let (mut p, mut n) = (input.positions, input.normals);
+    if let Some(t) = transform {
+        n = t.normal(n);
+        if positions {
+            p = t.point(p);
+        }
+    }
+    let mut finite = n.is_finite();
+    if positions {
+        finite = finite & p.is_finite();
+    }
+    if let Some(c) = &input.colors {
+        finite = finite & c[0].is_finite() & c[1].is_finite();
+        finite = finite & c[2].is_finite() & c[3].is_finite();
+    }
+    (p, n, finite)
 }
 
 /// The primary and secondary RGBA colours of one side of a block, after the clamp (the

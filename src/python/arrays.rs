@@ -37,6 +37,20 @@ pub fn float_of(array: &Bound<'_, PyUntypedArray>, name: &str) -> PyResult<Float
     }
 }
 
+/// The float type a `describe` call names ("float32" or "float64").
+///
+/// # Errors
+/// A `ValueError` for another name.
+pub fn float_named(dtype: &str) -> PyResult<Float> {
+    match dtype {
+        "float32" => Ok(Float::F32),
+        "float64" => Ok(Float::F64),
+        _ => Err(PyValueError::new_err(format!(
+            "dtype must be 'float32' or 'float64', got '{dtype}'"
+        ))),
+    }
+}
+
 /// A read borrow of `array` as `T`; a conflict with a write borrow (the same memory passed as
 /// `out=` to a call running in another thread) is a `ValueError` naming `name`.
 pub fn read<'py, T: Element>(

@@ -1,12 +1,11 @@
 //! The binding of `shade` and `describe`.
 
 use numpy::{Element, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
-use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
 use std::mem::MaybeUninit;
 
-use super::arrays::{filled, float_of, read, rows, vertex_colors, write, Float};
+use super::arrays::{filled, float_named, float_of, read, rows, vertex_colors, write, Float};
 use super::matrix;
 use super::runtime::{run, to_pyerr};
 use super::scene::Scene;
@@ -206,14 +205,9 @@ pub fn describe(
         clamp,
     )?;
     let scene = &scene.get().state;
-    match dtype {
-        "float32" => crate::lighting::shade::describe::<f32>(scene, &options),
-        "float64" => crate::lighting::shade::describe::<f64>(scene, &options),
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "dtype must be 'float32' or 'float64', got '{dtype}'"
-            )))
-        }
+    match float_named(dtype)? {
+        Float::F32 => crate::lighting::shade::describe::<f32>(scene, &options),
+        Float::F64 => crate::lighting::shade::describe::<f64>(scene, &options),
     }
     .map_err(to_pyerr)
 }

@@ -5,7 +5,7 @@ use numpy::{Element, PyReadonlyArray2, PyUntypedArray};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use super::arrays::{float_of, Float};
+use super::arrays::{float_named, float_of, Float};
 use super::matrix;
 use super::runtime::to_pyerr;
 use super::shading::shade_arrays;
@@ -206,14 +206,9 @@ pub fn describe_threejs(
 ) -> PyResult<String> {
     let options = options(model.as_ref(), clamp)?;
     let scene = &scene.get().state;
-    match dtype {
-        "float32" => describe::<f32>(scene, &options),
-        "float64" => describe::<f64>(scene, &options),
-        _ => {
-            return Err(PyValueError::new_err(format!(
-                "dtype must be 'float32' or 'float64', got '{dtype}'"
-            )))
-        }
+    match float_named(dtype)? {
+        Float::F32 => describe::<f32>(scene, &options),
+        Float::F64 => describe::<f64>(scene, &options),
     }
     .map_err(to_pyerr)
 }

@@ -23,7 +23,7 @@
 use glam::DMat4;
 
 use crate::errors::error::Error;
-use crate::lighting::kernel::{emit, Block, SideColors};
+use crate::lighting::kernel::{emit, world_inputs, Block, SideColors};
 use crate::lighting::mesh_phong::plan::Plan;
 use crate::lighting::mesh_phong::shade::Options;
 use crate::lighting::prepare::{cast_saturating, rgb, ColorClamp, Transform};
@@ -394,21 +394,7 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
     }
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
-        let (mut p, mut n) = (input.positions, input.normals);
-        if let Some(t) = &self.transform {
-            n = t.normal(n);
-            if self.plan.positions {
-                p = t.point(p);
-            }
-        }
-        let mut finite = n.is_finite();
-        if self.plan.positions {
-            finite = finite & p.is_finite();
-        }
-        if let Some(c) = &input.colors {
-            finite = finite & c[0].is_finite() & c[1].is_finite();
-            finite = finite & c[2].is_finite() & c[3].is_finite();
-        }
+        let (p, mut n, finite) = world_inputs(input, self.transform.as_ref(), self.plan.positions);
         // The back of a double-sided material, and a back-sided one, light the negated normal.
         if self.flip != (side == 1) {
             n = -n;

@@ -17,7 +17,7 @@ use glam::DMat4;
 use crate::errors::error::Error;
 use crate::gltf::light::Punctual;
 use crate::gltf::scene::Scene;
-use crate::lighting::kernel::{emit, Block, SideColors};
+use crate::lighting::kernel::{emit, world_inputs, Block, SideColors};
 use crate::lighting::metallic_roughness::brdf::{brdf, Albedo, Cosines, Surface, LEAST_COSINE};
 use crate::lighting::metallic_roughness::plan::Plan;
 use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
@@ -223,21 +223,7 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
     }
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, _side: usize) -> SideColors<V> {
-        let (mut p, mut n) = (input.positions, input.normals);
-        if let Some(t) = &self.transform {
-            n = t.normal(n);
-            if self.plan.positions {
-                p = t.point(p);
-            }
-        }
-        let mut finite = n.is_finite();
-        if self.plan.positions {
-            finite = finite & p.is_finite();
-        }
-        if let Some(c) = &input.colors {
-            finite = finite & c[0].is_finite() & c[1].is_finite();
-            finite = finite & c[2].is_finite() & c[3].is_finite();
-        }
+        let (p, n, finite) = world_inputs(input, self.transform.as_ref(), self.plan.positions);
         // Per-vertex base colours (a texture's) change the albedo and the constant term.
         let base = match (&input.colors, self.role) {
             (Some(c), ColorRole::BaseColor) => Some(std::array::from_fn::<V, 4, _>(|k| {
