@@ -296,14 +296,14 @@ pub fn render_metallic_roughness<T: Real>(
     depth: &mut [T],
     stop: &Stop,
 ) -> Result<(), Error> {
-    validate(mesh, camera, options, image.len(), depth.len())?;
-    if mesh.textured.is_some() && mesh.colors.is_some() {
-        return Err(Error::value(
-            "the metallic-roughness model takes vertex colours or a base colour texture, not \
-             both",
-        ));
-    }
-    let eye = camera.view.inverse().w_axis.truncate().to_array();
+    let frame = validate_world(
+        mesh,
+        camera,
+        options,
+        [image.len(), depth.len()],
+        "the metallic-roughness model takes vertex colours or a base colour texture",
+    )?;
+    let eye = frame.w_axis.truncate().to_array();
     let placed = GltfSceneData {
         camera_position: eye,
         ..(**scene).clone()
@@ -341,13 +341,13 @@ pub fn render_mesh_phong<T: Real>(
     depth: &mut [T],
     stop: &Stop,
 ) -> Result<(), Error> {
-    validate(mesh, camera, options, image.len(), depth.len())?;
-    if mesh.textured.is_some() && mesh.colors.is_some() {
-        return Err(Error::value(
-            "MeshPhongMaterial takes vertex colours or a colour texture (map), not both",
-        ));
-    }
-    let eye = camera.view.inverse();
+    let eye = validate_world(
+        mesh,
+        camera,
+        options,
+        [image.len(), depth.len()],
+        "MeshPhongMaterial takes vertex colours or a colour texture (map)",
+    )?;
     let p = camera.projection;
     // An affine projection (bottom row 0, 0, 0, 1) is orthographic.
     let orthographic = p.x_axis.w == 0.0 && p.y_axis.w == 0.0 && p.z_axis.w == 0.0;
@@ -368,6 +368,23 @@ pub fn render_mesh_phong<T: Real>(
         },
     };
     draw(shader, mesh, camera, options, image, depth, stop)
+}
+
+/// [`validate`] for a model in world coordinates, which takes vertex colours or a texture but
+/// not both (`takes`: the model and what it takes, for the error); returns the camera's frame
+/// in world coordinates (the inverse of the view), where the model's viewer is.
+fn validate_world<T: Real>(
+    mesh: &Mesh<'_, T>,
+    camera: &Camera,
+    options: &RenderOptions,
+    [image, depth]: [usize; 2],
+    takes: &str,
+) -> Result<DMat4, Error> {
+    validate(mesh, camera, options, image, depth)?;
+    if mesh.textured.is_some() && mesh.colors.is_some() {
+        return Err(Error::value(format!("{takes}, not both")));
+    }
+    Ok(camera.view.inverse())
 }
 
 /// The pipeline of [`render`] after validation, lit by `shader`.

@@ -322,6 +322,17 @@ pub enum ColorClamp {
     Off,
 }
 
+impl From<bool> for ColorClamp {
+    /// `true` is [`ColorClamp::On`], as the binding's `clamp` flag reads.
+    fn from(clamp: bool) -> Self {
+        if clamp {
+            Self::On
+        } else {
+            Self::Off
+        }
+    }
+}
+
 /// A scene and its options, prepared for one kernel type.
 #[derive(Clone, Debug)]
 pub struct Prepared<T: Real> {

@@ -91,11 +91,7 @@ impl GltfScene {
 fn options(model: Option<&PyReadonlyArray2<'_, f64>>, clamp: bool) -> PyResult<Options> {
     Ok(Options {
         model: model.map(|m| matrix(m, "model")).transpose()?,
-        clamp: if clamp {
-            ColorClamp::On
-        } else {
-            ColorClamp::Off
-        },
+        clamp: ColorClamp::from(clamp),
         ..Options::default()
     })
 }

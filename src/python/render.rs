@@ -193,11 +193,7 @@ pub fn render<'py>(
             .map(|mode| ColorMaterial::parse(mode, color_material_face))
             .transpose()
             .map_err(to_pyerr)?,
-        clamp: if clamp {
-            ColorClamp::On
-        } else {
-            ColorClamp::Off
-        },
+        clamp: ColorClamp::from(clamp),
     };
     let scene = &scene;
     match float_of(vertices, "vertices")? {

@@ -125,11 +125,7 @@ fn options_from(
         color_material,
         accuracy: Accuracy::parse(accuracy).map_err(to_pyerr)?,
         strict,
-        clamp: if clamp {
-            ColorClamp::On
-        } else {
-            ColorClamp::Off
-        },
+        clamp: ColorClamp::from(clamp),
     })
 }
 

@@ -142,11 +142,7 @@ impl ThreejsScene {
 fn options(model: Option<&PyReadonlyArray2<'_, f64>>, clamp: bool) -> PyResult<Options> {
     Ok(Options {
         model: model.map(|m| matrix(m, "model")).transpose()?,
-        clamp: if clamp {
-            ColorClamp::On
-        } else {
-            ColorClamp::Off
-        },
+        clamp: ColorClamp::from(clamp),
     })
 }
 
