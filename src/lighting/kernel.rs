@@ -486,7 +486,9 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                     *sum = sum.add(sat3(part));
                 }
             }
-            sums.map(Compensated::rounded)
+            // Not `sums.map(..)`, whose additions became calls (see `simd::lanes::each`).
+            let [a, d, s] = sums;
+            [a.rounded(), d.rounded(), s.rounded()]
         };
         let ambient = if self.any_ambient() {
             sat3(sums[0])

@@ -250,14 +250,23 @@ pub fn halfway_pow<V: ElementaryLanes>(
 #[inline(always)]
 fn power_of_base<V: ElementaryLanes>(y: V, scale: &Scale<V>, s: V::T, valid: V::Mask) -> V {
     let zero = V::splat(V::T::ZERO);
-    let squared = squared_exponent(s).map(|k| complement_pow(-y, k));
+    // `match`, not `Option::map`: a closure the standard library calls may be compiled
+    // without the kernel's target features (see `simd::lanes::each`).
+    #[allow(clippy::manual_map)]
+    let squared = match squared_exponent(s) {
+        Some(k) => Some(complement_pow(-y, k)),
+        None => None,
+    };
     let power = match squared {
         Some(p) if scale.near.all() => p,
         _ => {
             let ln = y.ln_1p() + V::select(scale.near, zero, scale.ln);
             let general = (V::splat(s) * ln).exp();
             // Lane by lane, so a lane's value does not depend on the block it shares.
-            squared.map_or(general, |p| V::select(scale.near, p, general))
+            match squared {
+                Some(p) => V::select(scale.near, p, general),
+                None => general,
+            }
         }
     };
     power.min(V::splat(V::T::MAX)).or_zero(valid)

@@ -14,7 +14,7 @@
 //! up to 2/a² ≈ 8·10⁵ ulp of D at the least roughness.
 
 use crate::numbers::real::Real;
-use crate::simd::lanes::{normalize_or_zero_fast, Lanes, V3};
+use crate::simd::lanes::{each, normalize_or_zero_fast, Lanes, V3};
 
 /// pyrender's `min_roughness`: the least perceptual roughness, and the dielectric f0.
 pub const MIN_ROUGHNESS: f64 = 0.04;
@@ -78,22 +78,23 @@ impl<T: Real> Surface<T> {
     /// The material's albedo in every lane.
     #[inline(always)]
     pub fn splat<V: Lanes<T = T>>(&self) -> Albedo<V> {
+        let (f0, diffuse) = (self.albedo.f0, self.albedo.diffuse);
         Albedo {
-            f0: self.albedo.f0.map(V::splat),
-            diffuse: self.albedo.diffuse.map(V::splat),
+            f0: each(|i| V::splat(f0[i])),
+            diffuse: each(|i| V::splat(diffuse[i])),
         }
     }
 
     /// The albedo of a base colour per lane (the factor times a texel, RGB).
     #[inline(always)]
     pub fn albedo_of<V: Lanes<T = T>>(&self, base: [V; 3]) -> Albedo<V> {
-        let [offset, metallic] = self.f0_of_base.map(V::splat);
-        let f0 = base.map(|c| c.mul_add(metallic, offset));
+        let [offset, metallic] = self.f0_of_base;
+        let f0 = each(|i| base[i].mul_add(V::splat(metallic), V::splat(offset)));
         let one = V::splat(T::ONE);
         let per = V::splat(self.diffuse_of_base);
         Albedo {
             f0,
-            diffuse: std::array::from_fn(|i| (one - f0[i]) * (base[i] * per)),
+            diffuse: each(|i| (one - f0[i]) * (base[i] * per)),
         }
     }
 }

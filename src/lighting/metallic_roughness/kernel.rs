@@ -25,7 +25,7 @@ use crate::lighting::prepare::{cast_saturating, rgb, ColorClamp, Transform};
 use crate::lighting::shade::BlockShader;
 use crate::numbers::real::{normalize_or_zero, Real};
 use crate::simd::float::{Float, Vector3};
-use crate::simd::lanes::{normalize_and_length, normalize_and_length_fast, Lanes, V3};
+use crate::simd::lanes::{each, normalize_and_length, normalize_and_length_fast, Lanes, V3};
 
 /// Where one light's rays come from, in `T`.
 #[derive(Clone, Copy, Debug)]
@@ -186,7 +186,10 @@ impl<T: Real> Kernel<T> {
                 Cosines { nl, nv },
                 self.plan.diffuse,
             );
-            let w = attenuation.map_or(nl, |a| (nl * a).min(V::splat(T::SATURATION)));
+            let w = match attenuation {
+                Some(a) => (nl * a).min(V::splat(T::SATURATION)),
+                None => nl,
+            };
             let saturation = V::splat(T::SATURATION);
             let max = V::splat(T::MAX);
             let c = light.radiance;
@@ -226,9 +229,9 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
         let (p, n, finite) = world_inputs(input, self.transform.as_ref(), self.plan.positions);
         // Per-vertex base colours (a texture's) change the albedo and the constant term.
         let base = match (&input.colors, self.role) {
-            (Some(c), ColorRole::BaseColor) => Some(std::array::from_fn::<V, 4, _>(|k| {
-                V::splat(self.base[k]) * c[k]
-            })),
+            (Some(c), ColorRole::BaseColor) => {
+                Some(each::<V, 4>(|k| V::splat(self.base[k]) * c[k]))
+            }
             _ => None,
         };
         let albedo = match &base {
