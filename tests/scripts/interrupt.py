@@ -48,6 +48,10 @@ def prepare(case: str) -> Callable[[], object]:
 
 
 def main(case: str) -> None:
+    # A process started in the background by a shell without job control inherits SIGINT
+    # ignored, and Python then installs no handler: restore it, so that the test measures
+    # glshade and not how the test run was started.
+    signal.signal(signal.SIGINT, signal.default_int_handler)
     call = prepare(case)
     sent: list[float] = []
 
