@@ -5,9 +5,11 @@
 //! the general one, bit for bit, on every instruction set; [`shape`]: the shapes' kernels likewise;
 //! [`range`]: finite input gives finite output in [0, 1]; [`normal_range`]: normals of any length;
 //! [`property`]: properties of `shade` over generated scenes; [`robust`]: every entry point stops
-//! when asked, and sizes beyond memory are errors, not aborts.
+//! when asked, and sizes beyond memory are errors, not aborts; [`machine_code`]: the SIMD
+//! kernels call no function but their cold paths.
 
 mod layers;
+mod machine_code;
 mod normal_range;
 mod property;
 mod range;

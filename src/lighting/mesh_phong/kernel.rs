@@ -348,7 +348,11 @@ impl<T: Real> Kernel<T> {
                 }
             };
             let nl = n.dot(l).clamp(T::ZERO, T::ONE);
-            let e = factor.map_or(nl, |f| nl * f);
+            // `match`, not `Option::map_or` (see `simd::lanes::each`).
+            let e = match factor {
+                Some(f) => nl * f,
+                None => nl,
+            };
             let h = normalize_and_length_fast(l + v).0;
             let nh = n.dot(h).clamp(T::ZERO, T::ONE);
             let lh = l.dot(h).clamp(T::ZERO, T::ONE);

@@ -186,6 +186,7 @@ impl<T: Real> Kernel<T> {
                 Cosines { nl, nv },
                 self.plan.diffuse,
             );
+            // `match`, not `Option::map_or` (see `simd::lanes::each`).
             let w = match attenuation {
                 Some(a) => (nl * a).min(V::splat(T::SATURATION)),
                 None => nl,
