@@ -105,6 +105,18 @@ fn shaped_scenes() -> Vec<(&'static str, Known, Scene)> {
             scene(mixed_lights().repeat(4), local),
         ),
         ("point", Point::KNOWN, scene(point.clone(), local)),
+        // One light and three: a kernel runs one or two lights as straight code, more in a loop.
+        (
+            "directional",
+            Directional::KNOWN,
+            scene(directional[..1].to_vec(), [0.0, 0.0, 1.0, 0.0]),
+        ),
+        ("point", Point::KNOWN, scene(point[..1].to_vec(), local)),
+        (
+            "point",
+            Point::KNOWN,
+            scene(point.iter().cycle().take(3).copied().collect(), local),
+        ),
         // Last: the base of `a_shape_fits_only_scenes_with_every_flag_it_fixes`.
         ("mixed", Mixed::KNOWN, scene(mixed_lights(), local)),
     ]
