@@ -89,7 +89,8 @@ impl<T: Real> Surface<T> {
     #[inline(always)]
     pub fn albedo_of<V: Lanes<T = T>>(&self, base: [V; 3]) -> Albedo<V> {
         let [offset, metallic] = self.f0_of_base;
-        let f0 = each(|i| base[i].mul_add(V::splat(metallic), V::splat(offset)));
+        let (offset, metallic) = (V::splat(offset), V::splat(metallic));
+        let f0 = each(|i| base[i].mul_add(metallic, offset));
         let one = V::splat(T::ONE);
         let per = V::splat(self.diffuse_of_base);
         Albedo {
