@@ -20,9 +20,13 @@ use std::marker::PhantomData;
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
 use crate::lighting::plan::{LightKind, Plan};
-use crate::lighting::power::{cos_pow, halfway_pow, normal_scale, spot_factor, sum_exact, Scale};
+use crate::lighting::power::{
+    cos_pow, half_even_exponent, halfway_even_pow, halfway_pow, normal_scale, spot_factor,
+    sum_exact, Scale,
+};
 use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Transform, Viewer};
 use crate::lighting::shape::{flag, General, Shape};
+use crate::numbers::elementary::ElementaryLanes;
 use crate::numbers::real::Real;
 use crate::simd::float::{ldexp, Float};
 use crate::simd::lanes::{
@@ -96,6 +100,15 @@ struct SideNormal<V: Lanes> {
     unit: V3<V>,
     /// |n| (1 with `normalize`): (n·ĥ)^s = (|n| n̂·ĥ)^s.
     scale: Scale<V>,
+}
+
+/// (n̂⊙ĥ)^s of [`Kernel::specular_power`] from ĥ itself: 0 for a zero `g` (VP + VP_e) and
+/// s > 0, for the exponents [`halfway_even_pow`] does not take and the lanes it does not hold.
+#[inline(always)]
+fn halfway_power<V: ElementaryLanes>(side: &SideNormal<V>, g: V3<V>, s: V::T) -> V {
+    let h = normalize_or_zero_fast(g);
+    let power = cos_pow::<V>(side.unit.dot(h), side.unit, h, s, &side.scale);
+    power.or_zero(!h.is_zero())
 }
 
 /// `sum + color · weight`, channel by channel (one fused multiply-add each).
@@ -360,9 +373,18 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 if S::KNOWN.light_kind == Some(constant) {
                     return V::splat(T::ZERO);
                 }
-                let h = normalize_or_zero_fast(vp + view);
-                let power = cos_pow::<V>(side.unit.dot(h), side.unit, h, s, &side.scale);
-                power.or_zero(!h.is_zero())
+                let g = vp + view;
+                // An even exponent (most scenes': 32, 64, 128) needs no ĥ, whose √ and ÷
+                // bound a point light (8 mixed lights 1.14 times as fast on a Zen 2).
+                let Some(half) = half_even_exponent(s) else {
+                    return halfway_power(side, g, s);
+                };
+                let (power, held) = halfway_even_pow(side.n, side.unit, g, half, &side.scale);
+                if held.all() {
+                    power
+                } else {
+                    V::select(held, power, halfway_power(side, g, s))
+                }
             }
             Specular::Phong => {
                 let r = side.n.scale(n_dot_vp + n_dot_vp) - vp;

@@ -320,6 +320,17 @@ impl<V: Lanes> V3<V> {
         self.x * o.x + self.y * o.y + self.z * o.z
     }
 
+    /// The cross product `self × o`, each component `a·b − c·d` as one product and one fused
+    /// multiply-add (two roundings, none lost to the difference's cancellation beyond them).
+    #[inline(always)]
+    pub fn cross(self, o: Self) -> Self {
+        Self {
+            x: self.y.mul_add(o.z, -(self.z * o.y)),
+            y: self.z.mul_add(o.x, -(self.x * o.z)),
+            z: self.x.mul_add(o.y, -(self.y * o.x)),
+        }
+    }
+
     /// `self ⊙ o + c`, each component rounded once.
     #[inline(always)]
     pub fn mul_add(self, o: Self, c: Self) -> Self {
