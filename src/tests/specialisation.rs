@@ -83,7 +83,12 @@ fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
         } else {
             [0.0, 0.0, 0.0, 1.0]
         },
-        shininess: if on(5) { 20.0 } else { 0.0 },
+        // An even exponent (a power with no ĥ) in some subsets, an odd one in others.
+        shininess: match (on(5), bits / 3 % 2) {
+            (false, _) => 0.0,
+            (true, 0) => 20.0,
+            (true, _) => 7.0,
+        },
         emission: [0.05, 0.0, 0.1, 1.0],
         ..Material::default()
     };
@@ -204,6 +209,10 @@ fn the_subsets_reach_every_plan_flag() {
     assert!(both(&|p| p.positions));
     assert!(both(&|p| p.lights.iter().copied().any(LightPlan::edges)));
     assert!(both(&|p| p.unit_normal));
+    // A per-vertex ĥ's power without n̂ in every block (an even exponent), and with it.
+    let per_vertex = |p: &Plan| p.view && p.normal_length;
+    assert!(plans.iter().any(|p| per_vertex(p) && !p.unit_normal));
+    assert!(plans.iter().any(|p| per_vertex(p) && p.unit_normal));
     assert!(both(&|p| p.normal_length));
     assert!(both(&|p| p.view));
     assert!(both(&|p| p.sides[0].power));

@@ -42,6 +42,9 @@ pub(crate) fn vertices<T: Real>() -> (Vec<[T; 3]>, Vec<[T; 3]>, Vec<T>) {
     positions[5] = [1.0, 2.0, 1.0];
     positions[6] = [f64::NAN, 0.0, 0.0];
     normals[7] = [0.0, f64::INFINITY, 0.0];
+    // Halfway between the tests' point light (1, 2, 1) and local viewer (0.5, 0, 2): VP and
+    // VP_e opposite, a zero halfway vector.
+    positions[8] = [0.75, 1.0, 1.5];
     let cast = |rows: Vec<[f64; 3]>| rows.into_iter().map(|r| r.map(T::from_f64)).collect();
     (
         cast(positions),
