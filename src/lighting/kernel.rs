@@ -381,25 +381,10 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 };
                 let (power, held) = halfway_even_pow(side.n, side.unit, g, half, &side.scale);
                 if held.all() {
-                    return power;
-                }
-                // VP + VP_e near zero somewhere: those lanes from ĥ, with n̂ where the plan
-                // left it out (the same n̂ as a plan that forms it in every block).
-                let exact = if self.plan.unit_normal {
-                    halfway_power(side, g, s)
+                    power
                 } else {
-                    let (unit, scale) = normal_scale(side.n, true);
-                    halfway_power(
-                        &SideNormal {
-                            unit,
-                            scale,
-                            ..*side
-                        },
-                        g,
-                        s,
-                    )
-                };
-                V::select(held, power, exact)
+                    V::select(held, power, halfway_power(side, g, s))
+                }
             }
             Specular::Phong => {
                 let r = side.n.scale(n_dot_vp + n_dot_vp) - vp;

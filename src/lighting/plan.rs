@@ -10,7 +10,6 @@ use std::fmt;
 
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
-use crate::lighting::power::half_even_exponent;
 use crate::lighting::prepare::{Prepared, Source, Viewer};
 use crate::numbers::real::Real;
 
@@ -75,9 +74,9 @@ pub struct Plan {
     pub sides: [SidePlan; 2],
     /// Positions are read: some light is positional or the viewer is local.
     pub positions: bool,
-    /// The unit normal n̂ is computed for every block (`normalize`, or a Blinn power of a
-    /// per-vertex ĥ whose exponent is not an even integer); a power of a constant ĥ or of an
-    /// even exponent needs it only in blocks with a normal far from unit length.
+    /// The unit normal n̂ is computed for every block (`normalize`, or a Blinn power with a
+    /// per-vertex ĥ); a power of a constant ĥ needs it only in blocks with a normal far from
+    /// unit length.
     pub unit_normal: bool,
     /// |n| is computed, as |n|² − 1 (exactly) and, far from unit length, ln |n|: a Blinn power on
     /// normals that are not normalised, (n·ĥ)^s = |n|^s (n̂·ĥ)^s.
@@ -145,13 +144,7 @@ impl Plan {
         let constant = LightKind::Directional {
             constant_halfway: true,
         };
-        // An even exponent's power of a per-vertex ĥ reads n̂ only where |n| is far from 1
-        // (`halfway_even_pow`); any other needs it in every block.
-        let odd_power = (0..sides_used).any(|side| {
-            sides[side].power && half_even_exponent(prepared.materials[side].shininess).is_none()
-        });
-        let per_vertex_halfway =
-            odd_power && lights.iter().any(|l| l.specular && l.kind != constant);
+        let per_vertex_halfway = lights.iter().any(|l| l.specular && l.kind != constant);
         Self {
             positions: positional || local,
             unit_normal: prepared.normalize || (normal_length && per_vertex_halfway),

@@ -209,10 +209,6 @@ fn the_subsets_reach_every_plan_flag() {
     assert!(both(&|p| p.positions));
     assert!(both(&|p| p.lights.iter().copied().any(LightPlan::edges)));
     assert!(both(&|p| p.unit_normal));
-    // A per-vertex ĥ's power without n̂ in every block (an even exponent), and with it.
-    let per_vertex = |p: &Plan| p.view && p.normal_length;
-    assert!(plans.iter().any(|p| per_vertex(p) && !p.unit_normal));
-    assert!(plans.iter().any(|p| per_vertex(p) && p.unit_normal));
     assert!(both(&|p| p.normal_length));
     assert!(both(&|p| p.view));
     assert!(both(&|p| p.sides[0].power));
