@@ -496,12 +496,11 @@ mod tests {
             let (unit, len) = normalize_and_length(v);
             let scale = Scale::of(v, len);
             let h = V3::splat(h);
+            let (even, _) = halfway_even_pow(v, unit, V3::splat([0.3, 0.0, 1.4]), 16.0, &scale);
             [
                 cos_pow(unit.dot(h), unit, h, 32.0, &scale).0,
                 halfway_pow(v, unit, &halfway, 32.0, &scale).0,
-                halfway_even_pow(v, unit, V3::splat([0.3, 0.0, 1.4]), 16.0, &scale)
-                    .0
-                     .0,
+                even.0,
             ]
         };
         let block = powers(V3 {
