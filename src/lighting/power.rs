@@ -519,6 +519,11 @@ mod tests {
         }
     }
 
+    /// a × b in `f64`, for the tests' orthonormal frames.
+    fn cross64(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
+        glam::DVec3::from(a).cross(glam::DVec3::from(b)).to_array()
+    }
+
     /// (|n|·n̂⊙ĝ)^s by [`halfway_even_pow`] in `f32` for the normal `n` as the kernel forms its
     /// scale, and whether it holds.
     fn even1(n: [f32; 3], g: [f32; 3], s: f32) -> (f32, bool) {
@@ -565,11 +570,7 @@ mod tests {
                 let axis = [t.sin() * 0.6, t.cos() * 0.6, 0.8];
                 // A unit vector at θ from `axis`, about it by t·1.3.
                 let ex = [axis[2], 0.0, -axis[0]].map(|c| c / (axis[0].powi(2) + 0.64).sqrt());
-                let ey = [
-                    axis[1] * ex[2] - axis[2] * ex[1],
-                    axis[2] * ex[0] - axis[0] * ex[2],
-                    axis[0] * ex[1] - axis[1] * ex[0],
-                ];
+                let ey = cross64(axis, ex);
                 let (a, b) = ((t * 1.3).cos() * theta.sin(), (t * 1.3).sin() * theta.sin());
                 let length = lengths[i as usize % lengths.len()];
                 let n: [f32; 3] = std::array::from_fn(|k| {
@@ -640,11 +641,7 @@ mod tests {
         // An orthonormal frame (ex, ey, hz) about ĥ, and ĥ rounded to f32.
         let hz = [0.3_f64, 0.5, 1.0].map(|c| c / 1.34_f64.sqrt());
         let ex = [hz[2], 0.0, -hz[0]].map(|c| c / (hz[0] * hz[0] + hz[2] * hz[2]).sqrt());
-        let ey = [
-            hz[1] * ex[2] - hz[2] * ex[1],
-            hz[2] * ex[0] - hz[0] * ex[2],
-            hz[0] * ex[1] - hz[1] * ex[0],
-        ];
+        let ey = cross64(hz, ex);
         let h = hz.map(|c| c as f32);
         let h_len = h.iter().map(|&c| f64::from(c).powi(2)).sum::<f64>().sqrt();
         let u = 2f64.powi(-24);
