@@ -66,13 +66,17 @@ fn hex(text: &str) -> Option<u64> {
 }
 
 /// Each kernel's call targets by name (every kernel a key: its name and address), from the
-/// disassembly `code`; a call through the GOT is named by the relocation of its slot in
-/// `relocations` (`objdump -R`): the symbol it binds, or the function at the address it holds.
+/// disassembly `code`; a call through the GOT, directly or through a register loaded from it,
+/// is named by the relocation of its slot in `relocations` (`objdump -R`): the symbol it binds,
+/// or the function at the address it holds.
 fn kernel_calls(code: &str, relocations: &str) -> BTreeMap<String, Vec<String>> {
     let mut functions: BTreeMap<u64, String> = BTreeMap::new();
     let mut calls: BTreeMap<String, Vec<String>> = BTreeMap::new();
     let mut slots: Vec<(String, u64)> = Vec::new();
     let mut current: Option<String> = None;
+    // The GOT slot last loaded into each register (`mov 0x10(%rip),%r12  # abc <memcpy@..>`):
+    // a function called more than once may be called through a register (`call *%r12`).
+    let mut loaded: BTreeMap<String, u64> = BTreeMap::new();
     for line in code.lines() {
         // A function's header: `0000000000abc123 <name>:`.
         if let Some((address, name)) = line.strip_suffix(">:").and_then(|l| l.split_once(" <")) {
@@ -81,14 +85,31 @@ fn kernel_calls(code: &str, relocations: &str) -> BTreeMap<String, Vec<String>> 
             }
             // Each instantiation of a generic kernel has the same demangled name.
             current = is_kernel(name).then(|| format!("{name} at {address}"));
+            loaded.clear();
             if let Some(kernel) = &current {
                 calls.entry(kernel.clone()).or_default();
+            }
+            continue;
+        }
+        if let Some((operands, slot)) = line
+            .split_once("\tmov")
+            .and_then(|(_, m)| m.split_once('#'))
+        {
+            if let Some((source, register)) = operands.trim().rsplit_once(',') {
+                if source.ends_with("(%rip)") {
+                    let slot = slot.trim().split(' ').next().and_then(hex).unwrap_or(0);
+                    loaded.insert(register.trim().to_owned(), slot);
+                }
             }
             continue;
         }
         let (Some(kernel), Some((_, call))) = (&current, line.split_once("\tcall")) else {
             continue;
         };
+        if let Some(slot) = call.trim().strip_prefix('*').and_then(|r| loaded.get(r)) {
+            slots.push((kernel.clone(), *slot));
+            continue;
+        }
         // `call   abc123 <target>`, or through the GOT `call *0x10(%rip)  # abc <_DYNAMIC+0x8>`.
         if let Some((_, slot)) = call.split_once('#') {
             let slot = slot.trim().split(' ').next().and_then(hex).unwrap_or(0);
