@@ -592,14 +592,15 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     }
 
     /// The colours of one side of a block from its eye-space normals `n`, the front normal
-    /// formed as the plan needs it. The directional shape's kernel (every ĥ constant) runs a
-    /// block whose normals are all near unit length (|n|² in [½, 2]: nearly every block) in
-    /// its own copy of the rest, where the scale is |n|² − 1 alone and its `near` a constant:
-    /// the powers' tests of it fold away, and with them n̂, ln |n| and the exp and ln paths,
-    /// which leaves the registers to the light (one and two directional lights 1.09 and 1.12
-    /// times as fast on a Zen 2). Both copies run the operations such a block takes, so the
-    /// bits are the same. The other kernels keep one copy: a copy in every kernel made the
-    /// `timing` build take 13 minutes instead of 2.
+    /// formed as the plan needs it. The directional shape's float32 kernel (every ĥ constant)
+    /// runs a block whose normals are all near unit length (|n|² in [½, 2]: nearly every
+    /// block) in its own copy of the rest, where the scale is |n|² − 1 alone and its `near` a
+    /// constant: the powers' tests of it fold away, and with them n̂, ln |n| and the exp and
+    /// ln paths, which leaves the registers to the light (one and two directional lights 1.09
+    /// and 1.12 times as fast on a Zen 2). Both copies run the operations such a block takes,
+    /// so the bits are the same. The other kernels keep one copy, for the build's time: a copy
+    /// in every kernel made the `timing` build take 13 minutes instead of 2, and the float64
+    /// kernel's copy, never timed, cost the tests' build minutes.
     #[inline(always)]
     fn lit_block<V: Lanes<T = T>>(
         &self,
@@ -628,7 +629,8 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             let constant_halfway = LightKind::Directional {
                 constant_halfway: true,
             };
-            if S::KNOWN.light_kind == Some(constant_halfway) && !plan.unit_normal {
+            let float32 = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
+            if S::KNOWN.light_kind == Some(constant_halfway) && float32 && !plan.unit_normal {
                 let (squared, near) = squared_minus_one(n);
                 if near.all() {
                     let front = SideNormal {
