@@ -65,6 +65,12 @@ fn hex(text: &str) -> Option<u64> {
     u64::from_str_radix(text.trim(), 16).ok()
 }
 
+/// The GOT slot's address an instruction's comment names (`# abc123 <memcpy@GLIBC>`), 0 if
+/// none.
+fn got_slot(comment: &str) -> u64 {
+    comment.trim().split(' ').next().and_then(hex).unwrap_or(0)
+}
+
 /// Each kernel's call targets by name (every kernel a key: its name and address), from the
 /// disassembly `code`; a call through the GOT, directly or through a register loaded from it,
 /// is named by the relocation of its slot in `relocations` (`objdump -R`): the symbol it binds,
@@ -97,8 +103,7 @@ fn kernel_calls(code: &str, relocations: &str) -> BTreeMap<String, Vec<String>> 
         {
             if let Some((source, register)) = operands.trim().rsplit_once(',') {
                 if source.ends_with("(%rip)") {
-                    let slot = slot.trim().split(' ').next().and_then(hex).unwrap_or(0);
-                    loaded.insert(register.trim().to_owned(), slot);
+                    loaded.insert(register.trim().to_owned(), got_slot(slot));
                 }
             }
             continue;
@@ -112,8 +117,7 @@ fn kernel_calls(code: &str, relocations: &str) -> BTreeMap<String, Vec<String>> 
         }
         // `call   abc123 <target>`, or through the GOT `call *0x10(%rip)  # abc <_DYNAMIC+0x8>`.
         if let Some((_, slot)) = call.split_once('#') {
-            let slot = slot.trim().split(' ').next().and_then(hex).unwrap_or(0);
-            slots.push((kernel.clone(), slot));
+            slots.push((kernel.clone(), got_slot(slot)));
         } else {
             let target = call.rsplit_once(" <").map_or(call.trim(), |(_, t)| t);
             let target = target.trim_end_matches('>').to_owned();
