@@ -630,18 +630,17 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 constant_halfway: true,
             };
             let float32 = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
-            if S::KNOWN.light_kind == Some(constant_halfway) && float32 && !plan.unit_normal {
-                let (squared, near) = squared_minus_one(n);
-                if near.all() {
-                    let front = SideNormal {
-                        n,
-                        unit: n,
-                        scale: Scale::squared_only(squared),
-                    };
-                    return self.side_colors(p, front, colors, finite, side);
-                }
+            let copy = S::KNOWN.light_kind == Some(constant_halfway) && float32;
+            let (squared, near) = squared_minus_one(n);
+            if copy && !plan.unit_normal && near.all() {
+                let front = SideNormal {
+                    n,
+                    unit: n,
+                    scale: Scale::squared_only(squared),
+                };
+                return self.side_colors(p, front, colors, finite, side);
             }
-            let (unit, scale) = normal_scale(n, plan.unit_normal);
+            let (unit, scale) = normal_scale(n, squared, near, plan.unit_normal);
             SideNormal { n, unit, scale }
         };
         self.side_colors(p, front, colors, finite, side)

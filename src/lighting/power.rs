@@ -105,12 +105,17 @@ impl<V: ElementaryLanes> Scale<V> {
     }
 }
 
-/// (n̂, the scale of n) for a normal `n` that is not normalised: n̂ and |n| in every block when
-/// `every_block`, else (when the only powers are [`halfway_pow`]'s) only in a block with a lane
-/// far from unit length, and `n` itself with [`Scale::squared_only`] in the others.
+/// (n̂, the scale of n) for a normal `n` that is not normalised, from its
+/// [`squared_minus_one`] (`squared`, `near`): n̂ and |n| in every block when `every_block`,
+/// else (when the only powers are [`halfway_pow`]'s) only in a block with a lane far from unit
+/// length, and `n` itself with [`Scale::squared_only`] in the others.
 #[inline(always)]
-pub fn normal_scale<V: ElementaryLanes>(n: V3<V>, every_block: bool) -> (V3<V>, Scale<V>) {
-    let (squared, near) = squared_minus_one(n);
+pub fn normal_scale<V: ElementaryLanes>(
+    n: V3<V>,
+    squared: V,
+    near: V::Mask,
+    every_block: bool,
+) -> (V3<V>, Scale<V>) {
     if every_block || !near.all() {
         let (unit, length) = normalize_and_length(n);
         (unit, Scale::from_squared(squared, near, length))
@@ -528,7 +533,8 @@ mod tests {
     /// scale, and whether it holds.
     fn even1(n: [f32; 3], g: [f32; 3], s: f32) -> (f32, bool) {
         let v = V3::<One>::splat(n);
-        let (unit, scale) = normal_scale(v, false);
+        let (squared, near) = squared_minus_one(v);
+        let (unit, scale) = normal_scale(v, squared, near, false);
         let half = half_even_exponent(s).expect("an even exponent");
         let (power, held) = halfway_even_pow(v, unit, V3::splat(g), half, &scale);
         (power.0[0], held.0[0])
@@ -628,7 +634,8 @@ mod tests {
     /// forms it: n̂ only where |n| is far from 1).
     fn halfway1(n: [f32; 3], h: [f32; 3], s: f32) -> f32 {
         let v = V3::<One>::splat(n);
-        let (unit, scale) = normal_scale(v, false);
+        let (squared, near) = squared_minus_one(v);
+        let (unit, scale) = normal_scale(v, squared, near, false);
         halfway_pow(v, unit, &Halfway::new(h), s, &scale).0[0]
     }
 
