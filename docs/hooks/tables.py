@@ -8,7 +8,8 @@ A line of a page that holds only ::
 command, the CPU, the date and time (UTC), the machine's notes and a link to the file. Lines
 inside fenced code blocks are left alone. Two kinds of file:
 
-- the JSON that ``python -m glshade bench shade|normals|render|cluster --json PATH`` writes
+- the JSON that ``python -m glshade bench shade|normals|render|cluster|builds --json PATH``
+  writes
   (``{"bench", "machine", "settings", "results"}``, see ``glshade.lab.bench.save``); the
   command is rebuilt from the bench's name and settings;
 - a measurement transcribed from elsewhere (the old README's tables): a JSON object with
@@ -170,12 +171,36 @@ def cluster_table(data: dict[str, Any]) -> Table:
     return ["method", f"median (fastest{DASH}slowest round)", "Mvert/s"], rows, after
 
 
+def builds_table(data: dict[str, Any]) -> Table:
+    """``bench builds``: million vertices/s per build, round and scene, and under the table
+    each build's speed over the first's (medians of per-round ratios)."""
+    settings, results = data["settings"], data["results"]
+    names = settings["scenes"]
+    header = ["build", "round", *names]
+    rows = [
+        [row["build"], str(row["round"]), *(f"{row['mvert_s'][s]:.1f}" for s in names)]
+        for row in results["rows"]
+    ]
+    first = settings["labels"][0]
+    after = " ".join(
+        f"{label} over {first} (medians of per-round ratios): "
+        + ", ".join(f"{s} {times(x)}{TIMES}" for s, x in by_scene.items())
+        + "."
+        for label, by_scene in results["ratios"].items()
+    )
+    return header, rows, after
+
+
 BENCHES: dict[str, tuple[Callable[[dict[str, Any]], Table], tuple[str, ...]]] = {
     # The table, and the settings that are flags of the command, in the command's order.
     "shade": (shade_table, ("sizes", "scenes", "rounds")),
     "normals": (normals_table, ("faces", "settle_s", "rounds")),
     "render": (render_table, ("faces", "size", "rounds")),
     "cluster": (cluster_table, ("vertices", "chunk", "workers", "repeat")),
+    "builds": (
+        builds_table,
+        ("builds", "labels", "rounds", "vertices", "scenes", "dtype", "threads", "seconds"),
+    ),
 }
 FLAGS = {"rounds": "repeat", "settle_s": "settle"}  # settings saved under another name
 
@@ -190,13 +215,20 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
         values = settings[key] if isinstance(settings[key], list) else [settings[key]]
         if key == "scenes":
             flags.append(f"--scenes '{','.join(values)}'")
+        elif key == "builds":  # the positional paths, as the files were named
+            flags.append(" ".join(values))
+        elif key == "labels":
+            flags.append(f"--labels '{','.join(values)}'")
         else:
             flags.append(f"--{FLAGS.get(key, key)} {' '.join(map(str, values))}")
     command = f"python -m glshade bench {bench} {' '.join(flags)} --json {name}"
     date = machine["date"].replace("T", " ").replace("+00:00", " UTC") + " (results saved)"
+    # `bench builds` runs each build in a child with threads of its own.
+    threads = settings.get("threads", machine["threads"]) if bench == "builds" else None
     notes = (
         f"{machine['usable_cpus']} of {machine['logical_cpus']} CPUs usable; glshade "
-        f"{machine['glshade']} ({machine['instruction_set']}, {machine['threads']} threads), "
+        f"{machine['glshade']} ({machine['instruction_set']}, "
+        f"{threads or machine['threads']} threads), "
         f"numpy {machine['numpy']}, Python {machine['python']}; {machine['platform']}"
     )
     if "numba" in settings:

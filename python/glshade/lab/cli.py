@@ -1,4 +1,5 @@
-"""Command line: ``python -m glshade demo|report|bench shade|normals|render|cluster|relief``."""
+"""Command line: ``python -m glshade demo|report|bench ...``, the benches being ``shade``,
+``normals``, ``render``, ``cluster``, ``relief`` and ``builds``."""
 
 from __future__ import annotations
 
@@ -33,6 +34,21 @@ def _not_negative(text: str) -> float:
     if not value >= 0:
         raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
     return value
+
+
+def _positive_seconds(text: str) -> float:
+    value = float(text)
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"must be a positive number of seconds, got {text}")
+    return value
+
+
+def _names(text: str) -> list[str]:
+    """Names separated by commas, none empty."""
+    names = [part.strip() for part in text.split(",")]
+    if not all(names):
+        raise argparse.ArgumentTypeError(f"expected names separated by commas, got {text!r}")
+    return names
 
 
 def _scenes(text: str) -> list[str]:
@@ -133,6 +149,47 @@ def _parser() -> argparse.ArgumentParser:
     )
     relief = which.add_parser("relief", help="glshade.relief beside matplotlib's LightSource")
     relief.add_argument("--size", type=_at_least_two, default=2048, help="grid side (default 2048)")
+    builds = which.add_parser(
+        "builds",
+        help="builds of glshade's core against each other: the scenes of bench shade with each "
+        "built extension module in turn, alternating",
+    )
+    builds.add_argument(
+        "build",
+        nargs="+",
+        help="two or more built extension modules (copies of python/glshade/_glshade.abi3.so "
+        "after `maturin develop --release`)",
+    )
+    builds.add_argument(
+        "--labels", type=_names, help="a name per build, comma-separated (default: file names)"
+    )
+    builds.add_argument(
+        "--repeat", type=_positive, default=2, help="rounds, the builds alternating (default 2)"
+    )
+    builds.add_argument(
+        "--vertices", type=_positive, default=1_000_000, help="vertices per call (default 10^6)"
+    )
+    builds.add_argument(
+        "--scenes", type=_scenes, default="all", help="as for bench shade (default all)"
+    )
+    builds.add_argument(
+        "--dtype", choices=("float32", "float64"), default="float32", help="default float32"
+    )
+    builds.add_argument(
+        "--threads", type=_positive, default=1, help="glshade's threads per build (default 1)"
+    )
+    builds.add_argument(
+        "--seconds",
+        type=_positive_seconds,
+        default=1.5,
+        help="how long each scene is called per build and round; the median call counts "
+        "(default 1.5)",
+    )
+    builds.add_argument(
+        "--json",
+        default="glshade-bench-builds.json",
+        help="where the results go, with the machine (default ./glshade-bench-builds.json)",
+    )
     beside = {"shade": "; a .csv of one row per scene, size and method beside it"}
     benches = (
         (shade, "shade"), (normals, "normals"), (render, "render"), (cluster, "cluster"),
@@ -184,6 +241,23 @@ def main(argv: Sequence[str] | None = None) -> int:
                 scenes=args.scenes,
                 threads_check=not args.no_threads_check,
             )
+        if args.what == "builds":
+            from .bench_builds import bench_builds
+
+            try:
+                return bench_builds(
+                    args.build,
+                    labels=args.labels,
+                    rounds=args.repeat,
+                    vertices=args.vertices,
+                    scenes=args.scenes,
+                    dtype=args.dtype,
+                    threads=args.threads,
+                    seconds=args.seconds,
+                    json_path=args.json,
+                )
+            except ValueError as error:
+                parser.error(str(error))
         if args.what == "render":
             return bench.bench_render(args.faces, args.size, args.repeat, args.json)
         if args.what == "relief":
