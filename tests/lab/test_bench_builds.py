@@ -80,6 +80,18 @@ def test_a_file_that_is_not_a_build_is_named(tmp_path: Path) -> None:
         bench_builds([a, not_a_build], rounds=1, vertices=100, scenes=SCENES, seconds=0.01)
 
 
+def test_the_command_names_a_build_that_does_not_run(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    _builds(tmp_path, "a.so")
+    (tmp_path / "empty.so").write_bytes(b"")
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(SystemExit) as stop:
+        cli.main(["bench", "builds", "a.so", "empty.so", "--vertices", "100", "--seconds", "0.01"])
+    assert stop.value.code == 2
+    assert "build 'empty.so' did not run (exit status 1)" in capsys.readouterr().err
+
+
 def test_the_child_refuses_a_core_from_elsewhere(tmp_path: Path) -> None:
     # This process imports the installed core, not one from tmp_path.
     with pytest.raises(RuntimeError, match="not from the build in"):

@@ -8,6 +8,7 @@ their loops fall, and one build by a few percent from one round to the next (see
 notes). Each build runs in a child interpreter of its own that imports a copy of this
 installation's Python package with that build as its extension module, so every build runs the
 same Python code and the same call; the child checks that it imported the build it was given.
+Every child, in every round, gets a fresh copy.
 """
 
 from __future__ import annotations
@@ -238,8 +239,8 @@ def bench_builds(
         for r in range(1, rounds + 1):
             for i, (label, path) in enumerate(zip(names, paths, strict=True)):
                 # A fresh copy for every child: one run read a build 27% slower on one scene in
-                # both of its rounds, and within 1% of the other builds in the runs before and
-                # after; whatever a copy's placement does then does not repeat in every round.
+                # both its rounds, within 1% of the others in the runs before and after (cause
+                # not found); whatever a copy's placement does then is not repeated each round.
                 folder = _stage(path, Path(scratch) / f"{r}-{i}")
                 arguments = {
                     "package": str(folder / "glshade"),

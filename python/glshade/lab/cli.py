@@ -256,7 +256,7 @@ def main(argv: Sequence[str] | None = None) -> int:
                     seconds=args.seconds,
                     json_path=args.json,
                 )
-            except ValueError as error:
+            except (ValueError, RuntimeError) as error:  # a build that does not import or run
                 parser.error(str(error))
         if args.what == "render":
             return bench.bench_render(args.faces, args.size, args.repeat, args.json)
