@@ -97,13 +97,16 @@ fn kernel_calls(code: &str, relocations: &str) -> BTreeMap<String, Vec<String>> 
             }
             continue;
         }
-        if let Some((operands, slot)) = line
-            .split_once("\tmov")
-            .and_then(|(_, m)| m.split_once('#'))
-        {
+        // A register holds the slot a `mov` loaded from the GOT until anything else moves
+        // into it.
+        if let Some((_, mov)) = line.split_once("\tmov") {
+            let (operands, comment) = mov.split_once('#').unwrap_or((mov, ""));
             if let Some((source, register)) = operands.trim().rsplit_once(',') {
-                if source.ends_with("(%rip)") {
-                    loaded.insert(register.trim().to_owned(), got_slot(slot));
+                let register = register.trim().to_owned();
+                if source.ends_with("(%rip)") && !comment.is_empty() {
+                    loaded.insert(register, got_slot(comment));
+                } else {
+                    loaded.remove(&register);
                 }
             }
             continue;
