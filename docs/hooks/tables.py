@@ -224,11 +224,10 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
     command = f"python -m glshade bench {bench} {' '.join(flags)} --json {name}"
     date = machine["date"].replace("T", " ").replace("+00:00", " UTC") + " (results saved)"
     # `bench builds` runs each build in a child with threads of its own.
-    threads = settings.get("threads", machine["threads"]) if bench == "builds" else None
+    threads = settings["threads"] if bench == "builds" else machine["threads"]
     notes = (
         f"{machine['usable_cpus']} of {machine['logical_cpus']} CPUs usable; glshade "
-        f"{machine['glshade']} ({machine['instruction_set']}, "
-        f"{threads or machine['threads']} threads), "
+        f"{machine['glshade']} ({machine['instruction_set']}, {threads} threads), "
         f"numpy {machine['numpy']}, Python {machine['python']}; {machine['platform']}"
     )
     if "numba" in settings:
