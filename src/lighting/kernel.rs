@@ -122,6 +122,18 @@ fn add_scaled<V: Lanes>(sum: V3<V>, color: [V::T; 3], weight: V) -> V3<V> {
     }
 }
 
+/// [`add_scaled`], or for `GREY` (r, g and b of `color` and of `sum` the same bits) its red
+/// channel alone, copied to the other two: the same bits, one fused multiply-add.
+#[inline(always)]
+fn add_scaled_as<V: Lanes, const GREY: bool>(sum: V3<V>, color: [V::T; 3], weight: V) -> V3<V> {
+    if GREY {
+        let x = V::splat(color[0]).mul_add(weight, sum.x);
+        V3 { x, y: x, z: x }
+    } else {
+        add_scaled(sum, color, weight)
+    }
+}
+
 /// A sum of blocks kept as `total + error` (Knuth's TwoSum per block), so the blocks' own
 /// rounding is all that remains: [`Float::SUM_BLOCK`] ulp of Σ|terms| at most, whatever the
 /// light count.
@@ -432,7 +444,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// `side` (0 front, 1 back, whose normal `normal` is already negated): ambient, diffuse
     /// and specular.
     #[inline(always)]
-    fn sums<V: Lanes<T = T>>(
+    fn sums<V: Lanes<T = T>, const GREY: bool>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
@@ -455,14 +467,14 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             let (vp, w) = Self::light_at(light, lp.attenuated, p);
             if flag(S::KNOWN.light_ambient, lp.ambient) {
                 let weight = w.min(V::splat(T::SATURATION));
-                ambient = add_scaled(ambient, light.ambient, weight);
+                ambient = add_scaled_as::<V, GREY>(ambient, light.ambient, weight);
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lit_all || lp.diffuse {
                 let weight = weight(w, n_dot_vp).or_zero(lit);
-                diffuse = add_scaled(diffuse, light.diffuse, weight);
+                diffuse = add_scaled_as::<V, GREY>(diffuse, light.diffuse, weight);
             }
             if lit_all || (lp.specular && side_plan.specular) {
                 let power = if lit_all || side_plan.power {
@@ -478,7 +490,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
                 let weight = weight(w, power).or_zero(gate);
-                specular = add_scaled(specular, light.specular, weight);
+                specular = add_scaled_as::<V, GREY>(specular, light.specular, weight);
             }
         }
         [ambient, diffuse, specular]
@@ -489,7 +501,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// with their rounding errors kept apart ([`Compensated`]), so the error is `SUM_BLOCK` ulp
     /// of Σ|terms| whatever the light count.
     #[inline(always)]
-    fn all_sums<V: Lanes<T = T>>(
+    fn all_sums<V: Lanes<T = T>, const GREY: bool>(
         &self,
         p: V3<V>,
         normal: &SideNormal<V>,
@@ -503,9 +515,9 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             // call per length, so that each call's slice has a constant length to unroll.
             let one_kind = S::KNOWN.light_kind.is_some();
             match lights.len() {
-                1 if one_kind => self.sums::<V>(&lights[..1], 0, p, normal, side, view),
-                2 if one_kind => self.sums::<V>(&lights[..2], 0, p, normal, side, view),
-                _ => self.sums::<V>(lights, 0, p, normal, side, view),
+                1 if one_kind => self.sums::<V, GREY>(&lights[..1], 0, p, normal, side, view),
+                2 if one_kind => self.sums::<V, GREY>(&lights[..2], 0, p, normal, side, view),
+                _ => self.sums::<V, GREY>(lights, 0, p, normal, side, view),
             }
         } else {
             let empty = Compensated {
@@ -514,7 +526,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             };
             let mut sums = [empty; 3];
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums::<V>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
+                let part = self.sums::<V, GREY>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
                 for (sum, part) in sums.iter_mut().zip(part) {
                     // Saturated, so no partial total overflows (inf − inf would be NaN).
                     *sum = sum.add(sat3(part));
@@ -543,6 +555,26 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         finite: V::Mask,
         side: usize,
     ) -> SideColors<V> {
+        // Grey lights sum one channel (8 mixed and 32 point lights 1.1 times as fast on a Zen 2).
+        let float32 = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
+        if S::GREY_SUMS && float32 && self.plan.grey {
+            self.side_colors_as::<V, true>(p, front, colors, finite, side)
+        } else {
+            self.side_colors_as::<V, false>(p, front, colors, finite, side)
+        }
+    }
+
+    /// [`Kernel::side_colors`], its light sums of one channel for `GREY` lights
+    /// ([`add_scaled_as`]).
+    #[inline(always)]
+    fn side_colors_as<V: Lanes<T = T>, const GREY: bool>(
+        &self,
+        p: V3<V>,
+        front: SideNormal<V>,
+        colors: Option<[V; 4]>,
+        finite: V::Mask,
+        side: usize,
+    ) -> SideColors<V> {
         let (prepared, plan) = (self.prepared, self.plan);
         let normal = if side == 0 {
             front
@@ -559,7 +591,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             Viewer::Local(e) if local && plan.view => normalize_or_zero_fast(V3::splat(e) - p),
             Viewer::Local(_) => V3::zero(),
         };
-        let [ambient, diffuse, specular] = self.all_sums(p, &normal, side, view);
+        let [ambient, diffuse, specular] = self.all_sums::<V, GREY>(p, &normal, side, view);
 
         let d = self.material(side, 1, colors);
         let alpha = d[3];

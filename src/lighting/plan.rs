@@ -83,6 +83,9 @@ pub struct Plan {
     pub normal_length: bool,
     /// The vertex-to-eye direction VP_e is computed per vertex (local viewer and a specular term).
     pub view: bool,
+    /// Every light's ambient, diffuse and specular colours are grey (r, g and b the same
+    /// bits), so the light sums' three channels are the same numbers: a kernel may sum one.
+    pub grey: bool,
 }
 
 impl Plan {
@@ -152,6 +155,10 @@ impl Plan {
             view: local && power,
             lights,
             sides,
+            grey: prepared
+                .lights
+                .iter()
+                .all(|l| grey(&l.ambient) && grey(&l.diffuse) && grey(&l.specular)),
         }
     }
 
@@ -187,8 +194,15 @@ impl Plan {
             unit_normal: true,
             normal_length: !prepared.normalize,
             view: matches!(prepared.viewer, Viewer::Local(_)),
+            grey: lean.grey,
         }
     }
+}
+
+/// r, g and b are the same bits (+0 and −0 are not).
+fn grey<T: Real>(c: &[T; 3]) -> bool {
+    let bits = c.map(|x| x.to_f64().to_bits());
+    bits[0] == bits[1] && bits[1] == bits[2]
 }
 
 fn nonzero<T: Real>(c: &[T]) -> bool {

@@ -131,6 +131,10 @@ pub trait Shape: Sync + 'static {
     const NAME: &'static str;
     /// The flags fixed.
     const KNOWN: Known;
+    /// The kernel has a second copy of its light loop that sums one channel, for scenes of
+    /// grey lights ([`Plan::grey`]; float32 only): the narrow shapes, not the general kernel,
+    /// whose copies on every instruction set would cost the build more than they save.
+    const GREY_SUMS: bool;
     /// Runs `work` (this shape's kernel) with the registers of `isa`, one the shape is
     /// compiled for.
     fn run<W: LaneWork>(isa: Isa, work: W);
@@ -142,6 +146,7 @@ pub struct General;
 impl Shape for General {
     const NAME: &'static str = "general";
     const KNOWN: Known = Known::NOTHING;
+    const GREY_SUMS: bool = false;
     #[inline(always)]
     fn run<W: LaneWork>(isa: Isa, work: W) {
         isa.run(work);
@@ -158,6 +163,7 @@ macro_rules! shapes {
         impl Shape for $name {
             const NAME: &'static str = $label;
             const KNOWN: Known = $known;
+            const GREY_SUMS: bool = true;
             #[inline(always)]
             fn run<W: LaneWork>(isa: Isa, work: W) {
                 isa.run_wide(work);

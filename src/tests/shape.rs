@@ -1,7 +1,7 @@
 //! The kernels compiled for a shape of scene ([`crate::lighting::shape`]) against the general
 //! kernel, bit for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2,
 //! AVX-512) and both types; the baseline choosing the general kernel; and [`fits`]
-//! refusing every feature a shape fixes otherwise.
+//! refusing every feature a shape fixes otherwise; and which plans are grey.
 
 use glam::DMat4;
 
@@ -43,6 +43,13 @@ fn mixed_lights() -> Vec<Light> {
             ..Light::default()
         },
     ]
+}
+
+/// [`mixed_lights`] with a grey ambient term: every light's colours grey.
+fn grey_mixed_lights() -> Vec<Light> {
+    let mut lights = mixed_lights();
+    lights[2].ambient = [0.1, 0.1, 0.1, 1.0];
+    lights
 }
 
 /// A scene of each shape: (the shape's name, its flags, the scene).
@@ -117,6 +124,14 @@ fn shaped_scenes() -> Vec<(&'static str, Known, Scene)> {
             Point::KNOWN,
             scene(point.iter().cycle().take(3).copied().collect(), local),
         ),
+        // Grey lights (`Plan::grey`): the narrow shapes sum one channel; twelve lights take
+        // the blocks' compensated sum, three the loop.
+        (
+            "mixed",
+            Mixed::KNOWN,
+            scene(grey_mixed_lights().repeat(4), local),
+        ),
+        ("mixed", Mixed::KNOWN, scene(grey_mixed_lights(), local)),
         // Last: the base of `a_shape_fits_only_scenes_with_every_flag_it_fixes`.
         ("mixed", Mixed::KNOWN, scene(mixed_lights(), local)),
     ]
@@ -333,4 +348,24 @@ fn the_baseline_runs_the_general_kernel() {
             assert_eq!(on_shape(&plan, &prepared, isa, Name), name);
         }
     }
+}
+
+#[test]
+fn a_plan_is_grey_only_when_every_light_colour_is() {
+    let plan = |lights: Vec<Light>| {
+        let scene = Scene {
+            lights,
+            ..Scene::default()
+        };
+        let options = ShadeOptions::default();
+        Plan::new(&Prepared::<f32>::new(&scene.validated().unwrap(), &options).unwrap())
+    };
+    assert!(plan(grey_mixed_lights()).grey);
+    assert!(!plan(mixed_lights()).grey, "a coloured ambient term");
+    let mut coloured = grey_mixed_lights();
+    coloured[1].diffuse = [1.0, 1.0, 0.999, 1.0];
+    assert!(!plan(coloured).grey, "a coloured diffuse term");
+    let mut coloured = grey_mixed_lights();
+    coloured[0].specular = [0.3, 0.2, 0.2, 1.0];
+    assert!(!plan(coloured).grey, "a coloured specular term");
 }
