@@ -9,10 +9,11 @@
 //! - `straight`: every light's numbers compiled in as constants, the loop unrolled into one
 //!   block of code, as Dr.Jit compiles a scene.
 //!
-//! Each in two arithmetics: `naive` (VP and ĥ normalised, 2 √ and 3 ÷ per light, the power by
-//! plain squaring) and `lean` (1 √ and 2 ÷ per light: the attenuation and 1/|d| from one
-//! division, ĥ's power from ‖n × g‖²/‖g‖² squared on the complement), and in one or two AVX2
-//! registers a value (8 or 16 vertices a block). Every kernel reads positions and normals as
+//! Each in three arithmetics: `naive` (VP and ĥ normalised, 2 √ and 3 ÷ per light, the power by
+//! plain squaring), `lean` (1 √ and 2 ÷ per light: the attenuation and 1/|d| from one division,
+//! ĥ's power from ‖n × g‖²/‖g‖² squared on the complement, without the test n·ĥ > 0, which
+//! these vertices never fail) and `approximate` (`lean` with the CPU's approximate reciprocals),
+//! and in one or two AVX2 registers a value (8 or 16 vertices a block). Every kernel reads positions and normals as
 //! planes (no transposes) and writes one grey channel (no ambient, no clamp): less than
 //! `gs.shade` does, so a structure that cannot lead a peer here cannot lead it in glshade.
 //! `examples/light_loop.py` times glshade and Dr.Jit on the same lights. Run both with one thread:
@@ -300,18 +301,17 @@ mod avx2 {
             }
             (dot(v.n, vp), attenuation, power)
         } else {
-            let (inverse_length, length, attenuation) = if ARITHMETIC == LEAN {
+            let (inverse_length, attenuation) = if ARITHMETIC == LEAN {
                 let length = d2.sqrt();
                 let den = k2.mul_add(d2, k1.mul_add(length, k0));
                 let r = V::splat(1.0).div(length.mul(den));
-                (den.mul(r), length, length.mul(r))
+                (den.mul(r), length.mul(r))
             } else {
                 let inverse_length = d2.inverse_sqrt_newton();
                 let length = d2.mul(inverse_length);
                 let den = k2.mul_add(d2, k1.mul_add(length, k0));
-                (inverse_length, length, den.inverse_newton())
+                (inverse_length, den.inverse_newton())
             };
-            let _ = length;
             let g = [
                 d[0].mul_add(inverse_length, v.view[0]),
                 d[1].mul_add(inverse_length, v.view[1]),
@@ -457,36 +457,29 @@ mod avx2 {
                 kernel!(|p, l, o| two_pass::<Pair, LEAN>(p, l, o)),
             ),
         ];
+        // The straight kernels' lights are constants, so each count is its own function.
+        macro_rules! straight_kernels {
+            ($straight:ident) => {
+                [
+                    (
+                        "straight, naive",
+                        kernel!(|p, _l, o| $straight::<Pair, NAIVE>(p, o)),
+                    ),
+                    (
+                        "straight, lean",
+                        kernel!(|p, _l, o| $straight::<Pair, LEAN>(p, o)),
+                    ),
+                    (
+                        "straight, approximate",
+                        kernel!(|p, _l, o| $straight::<Pair, APPROXIMATE>(p, o)),
+                    ),
+                ]
+            };
+        }
         if count == 8 {
-            all.extend([
-                (
-                    "straight, naive",
-                    kernel!(|p, _l, o| straight_8::<Pair, NAIVE>(p, o)),
-                ),
-                (
-                    "straight, lean",
-                    kernel!(|p, _l, o| straight_8::<Pair, LEAN>(p, o)),
-                ),
-                (
-                    "straight, approximate",
-                    kernel!(|p, _l, o| straight_8::<Pair, APPROXIMATE>(p, o)),
-                ),
-            ] as [(&'static str, Kernel); 3]);
+            all.extend(straight_kernels!(straight_8));
         } else {
-            all.extend([
-                (
-                    "straight, naive",
-                    kernel!(|p, _l, o| straight_32::<Pair, NAIVE>(p, o)),
-                ),
-                (
-                    "straight, lean",
-                    kernel!(|p, _l, o| straight_32::<Pair, LEAN>(p, o)),
-                ),
-                (
-                    "straight, approximate",
-                    kernel!(|p, _l, o| straight_32::<Pair, APPROXIMATE>(p, o)),
-                ),
-            ] as [(&'static str, Kernel); 3]);
+            all.extend(straight_kernels!(straight_32));
         }
         all
     }
