@@ -303,6 +303,10 @@ impl<'a, T: Real, S: Shape> Kernel<'a, T, S> {
 }
 
 impl<T: Real, S: Shape> Kernel<'_, T, S> {
+    /// The kernel computes in float32: the only type its extra copies (grey sums, near-unit
+    /// normals) are compiled for, to spare the build.
+    const FLOAT32: bool = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
+
     /// Some light has an ambient term.
     #[inline(always)]
     fn any_ambient(&self) -> bool {
@@ -556,8 +560,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         side: usize,
     ) -> SideColors<V> {
         // Grey lights sum one channel (8 mixed and 32 point lights 1.1 times as fast on a Zen 2).
-        let float32 = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
-        if S::GREY_SUMS && float32 && self.plan.grey {
+        if S::GREY_SUMS && Self::FLOAT32 && self.plan.grey {
             self.side_colors_as::<V, true>(p, front, colors, finite, side)
         } else {
             self.side_colors_as::<V, false>(p, front, colors, finite, side)
@@ -661,8 +664,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             let constant_halfway = LightKind::Directional {
                 constant_halfway: true,
             };
-            let float32 = std::mem::size_of::<T>() == std::mem::size_of::<f32>();
-            let copy = S::KNOWN.light_kind == Some(constant_halfway) && float32;
+            let copy = S::KNOWN.light_kind == Some(constant_halfway) && Self::FLOAT32;
             let (squared, near) = squared_minus_one(n);
             if copy && !plan.unit_normal && near.all() {
                 let front = SideNormal {
