@@ -599,7 +599,8 @@ class Scene:
         positions are read at all, and for each light which terms are evaluated: a term the
         scene does not need (a zero colour, shininess 0, no attenuation, no spot cone, a
         directional light's constant direction and halfway vector) is left out, with the same
-        results bit for bit.
+        results bit for bit. In float32 it also says when the lights are grey (r = g = b) and the
+        kernel sums one colour channel for the three, again with the same results.
 
         Parameters
         ----------

@@ -575,7 +575,7 @@ pub(crate) fn run_shader<T: Real, S: BlockShader<T>>(
 pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<String, Error> {
     let isa = Isa::detect();
     let exact = options.accuracy == Accuracy::Exact;
-    let (bytes, (shape, lanes), plan) = if exact || std::mem::size_of::<T>() == 8 {
+    let (bytes, (shape, lanes, grey_sums), plan) = if exact || std::mem::size_of::<T>() == 8 {
         let prepared = Prepared::<f64>::new(scene, options)?;
         let plan = Plan::new(&prepared);
         (8, shape_of(&plan, &prepared, isa), plan)
@@ -593,20 +593,28 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
     } else {
         ""
     };
+    // The kernel's one-channel copy: float32 only, in the shapes that have it.
+    let grey = if grey_sums && bytes == 4 && plan.grey && !plan.lights.is_empty() {
+        "; grey lights: one channel summed"
+    } else {
+        ""
+    };
     Ok(format!(
-        "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; {plan}{range}",
+        "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; \
+         {plan}{grey}{range}",
         bytes * 8,
         isa.name(),
     ))
 }
 
-/// The name of the shape whose kernel runs `plan`, and its lanes per block with `isa`.
-fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static str, usize) {
+/// The name of the shape whose kernel runs `plan`, its lanes per block with `isa`, and whether
+/// it sums grey lights in one channel ([`Shape::GREY_SUMS`]).
+fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static str, usize, bool) {
     struct Name<T>(Isa, PhantomData<T>);
     impl<T: Real> OnShape for Name<T> {
-        type Output = (&'static str, usize);
+        type Output = (&'static str, usize, bool);
         fn call<S: Shape>(self) -> Self::Output {
-            (S::NAME, block_lanes::<T>(self.0))
+            (S::NAME, block_lanes::<T>(self.0), S::GREY_SUMS)
         }
     }
     on_shape(plan, prepared, isa, Name::<T>(isa, PhantomData))

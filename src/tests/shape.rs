@@ -12,7 +12,7 @@ use crate::gl::scene::{Scene, Specular};
 use crate::lighting::kernel::Kernel;
 use crate::lighting::plan::Plan;
 use crate::lighting::prepare::{Prepared, ShadeOptions};
-use crate::lighting::shade::{as_uninit, run_shader, Inputs};
+use crate::lighting::shade::{as_uninit, describe, run_shader, Inputs};
 use crate::lighting::shape::{
     fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape,
 };
@@ -368,4 +368,25 @@ fn a_plan_is_grey_only_when_every_light_colour_is() {
     let mut coloured = grey_mixed_lights();
     coloured[0].specular = [0.3, 0.2, 0.2, 1.0];
     assert!(!plan(coloured).grey, "a coloured specular term");
+}
+
+#[test]
+fn the_plan_line_names_grey_sums_only_where_a_kernel_sums_one_channel() {
+    let line = |lights: Vec<Light>, wide: bool| {
+        let scene = Scene {
+            lights,
+            ..Scene::default()
+        };
+        let (scene, options) = (scene.validated().unwrap(), ShadeOptions::default());
+        if wide {
+            describe::<f64>(&scene, &options).unwrap()
+        } else {
+            describe::<f32>(&scene, &options).unwrap()
+        }
+    };
+    let named = "grey lights: one channel summed";
+    assert!(line(grey_mixed_lights(), false).contains(named));
+    assert!(!line(grey_mixed_lights(), true).contains(named), "float64");
+    assert!(!line(mixed_lights(), false).contains(named), "coloured");
+    assert!(!line(Vec::new(), false).contains(named), "no lights");
 }

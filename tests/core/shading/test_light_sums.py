@@ -3,7 +3,8 @@ dim ones, each dim term below half an ulp of the bright one in float32, in eithe
 ``"fast"`` sums blocks of 8 lights in float32 and adds the blocks' sums with their rounding
 errors kept apart (TwoSum): within 8 ulp of the correctly rounded total, where a running
 float32 sum from the bright light on loses every dim term (28 ulp low with 999 of them).
-``"exact"`` sums in float64: within 1 ulp."""
+``"exact"`` sums in float64: within 1 ulp. Grey lights (r = g = b) are summed in one channel
+by the float32 kernels that have the copy, and the plan says so."""
 
 from __future__ import annotations
 
@@ -40,3 +41,18 @@ def test_one_bright_light_among_dim_ones(accuracy: str, count: int, bright: str)
         for t in terms:
             running += t
         assert _ulps_apart(running, total) > ULPS["fast"]
+
+
+def test_the_plan_names_grey_sums_where_the_kernel_sums_one_channel() -> None:
+    white = gs.Lights(position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=(0.8, 0.8, 0.8))
+    tinted = gs.Lights(position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=[(0.8, 0.8, 0.8), (1, 0.9, 0.8)])
+    material = gs.Material(diffuse=(0.9, 0.2, 0.1), specular=(0.5, 0.5, 0.5), shininess=32)
+    grey = gs.Scene(white, material=material, viewer=(0, 0, 0, 1))
+    named = "grey lights: one channel summed"
+    assert named in grey.plan("float32")
+    assert named not in grey.plan("float32", accuracy="exact")  # float64 arithmetic
+    assert named not in grey.plan("float64")
+    # An infinite viewer puts the point light on the general kernel, which has no such copy.
+    assert "general kernel" in gs.Scene(white, material=material).plan("float32")
+    assert named not in gs.Scene(white, material=material).plan("float32")
+    assert named not in gs.Scene(tinted, material=material, viewer=(0, 0, 0, 1)).plan("float32")
