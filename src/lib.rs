@@ -10,8 +10,10 @@
 //! clamped to [0, 1] once, at the end.
 //!
 //! The API is what the crate root re-exports: the entry points [`shade`], [`shade_uninit`],
-//! [`describe`], [`face_normals`], [`vertex_normals`] and [`render`], the camera matrices
-//! [`look_at`], [`perspective`] and [`orthographic`], and the types of their arguments.
+//! [`describe`], [`face_normals`], [`vertex_normals`], [`crease_normals`] and [`render`], the
+//! camera matrices [`look_at`], [`perspective`] and [`orthographic`], and the types of their
+//! arguments; the models outside GL state in [`metallic_roughness`] and [`mesh_phong`], and
+//! matplotlib's relief shading in [`light_source`].
 //! [`Real`] is implemented for `f32` and `f64` only (its supertraits are internal).
 //!
 //! # Layers
@@ -96,7 +98,15 @@ pub mod mesh_phong {
     pub use crate::threejs::material::{MeshPhongMaterial, Side};
     pub use crate::threejs::scene::{Scene, ValidScene, Viewer};
 }
+pub use normals::crease::crease_normals;
 pub use normals::{face_normals, vertex_normals, Weighting};
+/// matplotlib's relief shading (`matplotlib.colors.LightSource`) of elevation grids and normal
+/// maps, in `f64`: `hillshade`, `shade_normals` (here [`intensity`](light_source::intensity)),
+/// and the blends of an intensity with an RGB image.
+pub mod light_source {
+    pub use crate::relief::blend::{blend, Blend};
+    pub use crate::relief::hillshade::{hillshade, intensity};
+}
 pub use numbers::real::Real;
 pub use render::camera::{look_at, orthographic, perspective, Camera};
 pub use render::mesh::Mesh;
