@@ -6,13 +6,13 @@ errors.
 The feature subsets are those of the core's specialisation tests (src/tests/specialisation.rs,
 14 features: directional and positional lights, attenuation, spot, local viewer, shininess,
 specular colour, two-sided lighting, separate specular, colour material, modelview, normalize,
-Phong, light ambient), rebuilt here as reference scenes. Their 2^14 subsets make 178 distinct
+Phong, light ambient), rebuilt here as reference scenes. Their 2^14 subsets make 206 distinct
 `Scene.plan` lines and 7,724 distinct compute shader sources (the generator also specialises on
 the colour material mode and face, the specular gate, two-sided lighting, ...). llvmpipe compiles
 a program in 0.1 to 0.4 s, so all of them would take some 25 minutes; the test runs a greedy
 cover instead: programs that between them hold every `Scene.plan` line, every distinct light
-loop and every distinct function of the generated GLSL (light groups and counts aside), 394
-programs, each on every subset that generates it (819 subsets), with every pair of features in
+loop and every distinct function of the generated GLSL (light groups and counts aside), 509
+programs, each on every subset that generates it (968 subsets), with every pair of features in
 all four on/off combinations and every plan flag both ways among them (asserted).
 """
 
