@@ -45,7 +45,9 @@ def test_one_bright_light_among_dim_ones(accuracy: str, count: int, bright: str)
 
 def test_the_plan_names_grey_sums_where_the_kernel_sums_one_channel() -> None:
     white = gs.Lights(position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=(0.8, 0.8, 0.8))
-    tinted = gs.Lights(position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=[(0.8, 0.8, 0.8), (1, 0.9, 0.8)])
+    tinted = gs.Lights(
+        position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=[(0.8, 0.8, 0.8), (1, 0.9, 0.8)]
+    )
     material = gs.Material(diffuse=(0.9, 0.2, 0.1), specular=(0.5, 0.5, 0.5), shininess=32)
     grey = gs.Scene(white, material=material, viewer=(0, 0, 0, 1))
     named = "grey lights: one channel summed"
