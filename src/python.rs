@@ -59,7 +59,7 @@ mod _glshade {
     #[pymodule_export]
     use super::scene::{Lights, Material, Scene};
     #[pymodule_export]
-    use super::shading::{describe, shade, stream};
+    use super::shading::{describe, lean_directional, shade, stream};
     #[pymodule_export]
     use super::threejs::{describe_threejs, shade_threejs, ThreejsScene};
 

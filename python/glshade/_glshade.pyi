@@ -20,6 +20,7 @@ __all__ = [
     "describe_threejs",
     "face_normals",
     "hillshade",
+    "lean_directional",
     "look_at",
     "orthographic",
     "perspective",
@@ -113,6 +114,14 @@ def stream(
     positions: NDArray[np.floating[Any]],
     normals: NDArray[np.floating[Any]],
     read_positions: bool,
+) -> NDArray[np.floating[Any]]: ...
+def lean_directional(
+    scene: Scene,
+    normals: NDArray[np.floating[Any]],
+    *,
+    nan: bool = False,
+    power: bool = False,
+    saturate: bool = False,
 ) -> NDArray[np.floating[Any]]: ...
 def describe(
     scene: Scene,
