@@ -223,16 +223,11 @@ mod tests {
             })
             .collect();
         let mut exact = vec![0.0f32; 4 * normals.len()];
-        let none: &[[f32; 3]] = &[];
+        // Positions are not read for this light; `shade` still takes one row per vertex.
         let options = ShadeOptions::default();
+        let stop = Stop::new();
         shade(
-            &scene,
-            none,
-            &normals,
-            None,
-            &options,
-            &mut exact,
-            &Stop::new(),
+            &scene, &normals, &normals, None, &options, &mut exact, &stop,
         )
         .unwrap();
         let every = Safeguards {

@@ -373,8 +373,15 @@ fn a_plan_is_grey_only_when_every_light_colour_is() {
 #[test]
 fn the_plan_line_names_grey_sums_only_where_a_kernel_sums_one_channel() {
     let line = |lights: Vec<Light>, wide: bool| {
+        // A specular term and a local viewer: the mixed kernel's scene.
         let scene = Scene {
             lights,
+            material: Material {
+                specular: [0.6, 0.5, 0.4, 1.0],
+                shininess: 20.0,
+                ..Material::default()
+            },
+            viewer: [0.0, 0.0, 0.0, 1.0],
             ..Scene::default()
         };
         let (scene, options) = (scene.validated().unwrap(), ShadeOptions::default());
@@ -385,6 +392,7 @@ fn the_plan_line_names_grey_sums_only_where_a_kernel_sums_one_channel() {
         }
     };
     let named = "grey lights: one channel summed";
+    assert!(line(grey_mixed_lights(), false).contains("mixed kernel"));
     assert!(line(grey_mixed_lights(), false).contains(named));
     assert!(!line(grey_mixed_lights(), true).contains(named), "float64");
     assert!(!line(mixed_lights(), false).contains(named), "coloured");
