@@ -114,7 +114,9 @@ pub fn hillshade(
 }
 
 /// `shade_normals`: the dot product of each normal with the unit `direction` towards the light,
-/// stretched over the whole image ([`stretch`]).
+/// stretched over the whole image as matplotlib stretches it: (`fraction`·i − min i)/(max i −
+/// min i) where the range exceeds 1e-6 and no intensity is NaN (else `fraction`·i), then
+/// clipped to [0, 1], NaN kept.
 ///
 /// # Errors
 /// A value error for lengths that do not match, or [`Error::interrupted`].
