@@ -593,8 +593,7 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
     } else {
         ""
     };
-    // The kernel's one-channel copy: float32 only, in the shapes that have it.
-    let grey = if grey_sums && bytes == 4 && plan.grey && !plan.lights.is_empty() {
+    let grey = if grey_sums && !plan.lights.is_empty() {
         "; grey lights: one channel summed"
     } else {
         ""
@@ -608,16 +607,17 @@ pub fn describe<T: Real>(scene: &ValidScene, options: &ShadeOptions) -> Result<S
 }
 
 /// The name of the shape whose kernel runs `plan`, its lanes per block with `isa`, and whether
-/// it sums grey lights in one channel ([`Shape::GREY_SUMS`]).
+/// it sums the light sums in one channel ([`Kernel::sums_grey`]).
 fn shape_of<T: Real>(plan: &Plan, prepared: &Prepared<T>, isa: Isa) -> (&'static str, usize, bool) {
-    struct Name<T>(Isa, PhantomData<T>);
-    impl<T: Real> OnShape for Name<T> {
+    struct Name<'p, T>(Isa, &'p Plan, PhantomData<T>);
+    impl<T: Real> OnShape for Name<'_, T> {
         type Output = (&'static str, usize, bool);
         fn call<S: Shape>(self) -> Self::Output {
-            (S::NAME, block_lanes::<T>(self.0), S::GREY_SUMS)
+            let grey = Kernel::<T, S>::sums_grey(self.1);
+            (S::NAME, block_lanes::<T>(self.0), grey)
         }
     }
-    on_shape(plan, prepared, isa, Name::<T>(isa, PhantomData))
+    on_shape(plan, prepared, isa, Name::<T>(isa, plan, PhantomData))
 }
 
 #[cfg(test)]
