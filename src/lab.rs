@@ -1,9 +1,10 @@
-//! The lab's native part, built with the `lab` feature (the Python binding turns it on): the
-//! streaming floor that `python -m glshade bench shade` measures each scene against
-//! ([`stream`]), and the lean bound of one directional light ([`lean`]). Nothing in the core
-//! uses them.
+//! The lab's native part: the streaming floor that `python -m glshade bench shade` measures
+//! each scene against ([`stream`], built with the binding, which ships it), and, with the
+//! `lab` feature only, the lean bound of one directional light (`lean`, for
+//! `benches/lean_directional.py`). Nothing in the core uses them.
 //!
 //! Uses [`crate::lighting`] and the layers below it.
 
+#[cfg(feature = "lab")]
 pub mod lean;
 pub mod stream;

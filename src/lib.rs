@@ -10,11 +10,26 @@
 //! clamped to [0, 1] once, at the end.
 //!
 //! The API is what the crate root re-exports: the entry points [`shade`], [`shade_uninit`],
-//! [`describe`], [`face_normals`], [`vertex_normals`], [`crease_normals`] and [`render`], the
-//! camera matrices [`look_at`], [`perspective`] and [`orthographic`], and the types of their
-//! arguments; the models outside GL state in [`metallic_roughness`] and [`mesh_phong`], and
-//! matplotlib's relief shading in [`light_source`].
+//! [`describe`] and [`render`], which take a scene of any shading model ([`Model`],
+//! [`RenderModel`]), [`face_normals`], [`vertex_normals`] and [`crease_normals`], the camera
+//! matrices [`look_at`], [`perspective`] and [`orthographic`], and the types of their
+//! arguments; the state of the models outside GL in [`metallic_roughness`] and [`mesh_phong`],
+//! and matplotlib's relief shading in [`light_source`].
 //! [`Real`] is implemented for `f32` and `f64` only (its supertraits are internal).
+//!
+//! # Models
+//!
+//! Each shading model has one name per place; this table maps them (the Python package's
+//! `glshade._model` has the same):
+//!
+//! | model | state (`src/<state>/`) | kernel (`src/lighting/<model>/`) | Python | native scene |
+//! |---|---|---|---|---|
+//! | OpenGL 2.1's fixed function | `gl` | `fixed_function` | `glshade.Scene` | `Scene` |
+//! | glTF metallic-roughness (pyrender) | `gltf` | `metallic_roughness` | `glshade.gltf.Scene` | `GltfScene` |
+//! | three.js `MeshPhongMaterial` | `threejs` | `mesh_phong` | `glshade.threejs.Scene` | `ThreejsScene` |
+//!
+//! The crate's modules [`metallic_roughness`] and [`mesh_phong`] are named after the model
+//! and hold its state and options.
 //!
 //! # Layers
 //!
@@ -24,23 +39,23 @@
 //! | layer | what it is |
 //! |---|---|
 //! | `python` | the binding (feature `python`): validates, releases the GIL, calls the core |
-//! | `lab` | the streaming floor of `bench shade` (feature `lab`, on with `python`) |
+//! | `lab` | the streaming floor of `bench shade` (with `python`); the lab's experiments (feature `lab`) |
 //! | `render` | camera, clipping, rasterisation, visibility, the shading passes |
 //! | `relief` | matplotlib's relief shading of elevation grids: hillshade, blends |
 //! | `normals` | face, vertex and corner (creased) normals, the vertex-to-face adjacency |
-//! | `lighting` | per-call preparation, the plan, the kernel and its shapes, `shade`; the metallic-roughness and `MeshPhongMaterial` models |
+//! | `lighting` | the models side by side (`fixed_function`, `metallic_roughness`, `mesh_phong`) and what they share: the model interface, the parallel driver, the block vocabulary, float64 widening |
 //! | `gl` | GL state: lights, materials, the scene, per-vertex colours |
 //! | `gltf` | glTF state: the metallic-roughness material, punctual lights, the scene |
 //! | `threejs` | three.js state: `MeshPhongMaterial`, its lights, the scene |
 //! | `numbers` | `exp`/`ln` over lanes, `Real`, matrix helpers |
 //! | `simd` | `f32`/`f64` behind one trait, the lanes of each instruction set, dispatch |
-//! | `memory` | fallible allocation, zeroed scratch pages |
+//! | `memory` | fallible allocation, zeroed scratch pages, memory to be written |
 //! | `errors` | the error type, stopping a call |
 
 #[cfg(feature = "python")]
 mod python;
 
-#[cfg(feature = "lab")]
+#[cfg(any(feature = "python", feature = "lab"))]
 #[cfg_attr(not(feature = "python"), allow(dead_code))] // the binding is its only caller
 mod lab;
 
@@ -75,25 +90,30 @@ pub use gl::light::{Light, LIGHT_ROW_LEN};
 pub use gl::material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
 pub use gl::scene::{Scene, Specular, ValidScene};
 pub use gl::vertex_colors::VertexColors;
-pub use lighting::prepare::{Accuracy, ShadeOptions};
-pub use lighting::shade::{describe, shade, shade_uninit};
+pub use lighting::clamp::ColorClamp;
+pub use lighting::fixed_function::options::{Accuracy, ShadeOptions};
+pub use lighting::model::{describe, shade, shade_uninit, Model};
+pub use lighting::world::{WorldKernel, WorldModel};
 
 /// The glTF 2.0 metallic-roughness model as pyrender evaluates it: its scene, material and
-/// punctual lights (world coordinates, `f64`), and `shade`, `shade_uninit` and `describe` over
-/// arrays of `f32` or `f64`.
+/// punctual lights (world coordinates, `f64`) and its options. [`shade`], [`shade_uninit`],
+/// [`describe`] and [`render`] are the crate's, which take every model.
 pub mod metallic_roughness {
     pub use crate::gltf::light::{Light, Punctual};
     pub use crate::gltf::material::Material;
     pub use crate::gltf::scene::{Scene, ValidScene};
-    pub use crate::lighting::metallic_roughness::shade::{describe, shade, shade_uninit, Options};
-    pub use crate::render::render_metallic_roughness as render;
+    pub use crate::lighting::metallic_roughness::options::{ColorRole, Options};
+    pub use crate::lighting::model::{describe, shade, shade_uninit};
+    pub use crate::render::render;
 }
 /// three.js' `MeshPhongMaterial` as release 111 (and, with physically correct lights, the
-/// current release) evaluates it: its scene, material and lights (world coordinates, `f64`),
-/// and `shade`, `shade_uninit` and `describe` over arrays of `f32` or `f64`.
+/// current release) evaluates it: its scene, material and lights (world coordinates, `f64`)
+/// and its options. [`shade`], [`shade_uninit`], [`describe`] and [`render`] are the crate's,
+/// which take every model.
 pub mod mesh_phong {
-    pub use crate::lighting::mesh_phong::shade::{describe, shade, shade_uninit, Options};
-    pub use crate::render::render_mesh_phong as render;
+    pub use crate::lighting::mesh_phong::options::Options;
+    pub use crate::lighting::model::{describe, shade, shade_uninit};
+    pub use crate::render::render;
     pub use crate::threejs::light::{Kind, Light};
     pub use crate::threejs::material::{MeshPhongMaterial, Side};
     pub use crate::threejs::scene::{Scene, ValidScene, Viewer};
@@ -110,5 +130,7 @@ pub mod light_source {
 pub use numbers::real::Real;
 pub use render::camera::{look_at, orthographic, perspective, Camera};
 pub use render::mesh::Mesh;
+pub use render::options::{Provoking, RenderOptions, Shading};
 pub use render::raster::{Cull, Viewport};
-pub use render::{render, RenderOptions, Shading};
+pub use render::render;
+pub use render::shader::RenderModel;

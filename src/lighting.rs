@@ -1,19 +1,33 @@
-//! Lighting: the lighting equation over arrays of vertices. A call prepares the scene once in
-//! `f64` ([`prepare`]), decides what the scene needs computed ([`plan`]), picks a kernel compiled
-//! for the scene's shape ([`shape`]) and runs the one equation ([`kernel`], with the specular and
-//! spot powers of [`power`]) block by block over rayon's threads ([`shade`]).
+//! Lighting: the shading models over arrays of vertices, side by side, and what they share.
 //!
-//! The glTF metallic-roughness model ([`metallic_roughness`]) and three.js' `MeshPhongMaterial`
-//! ([`mesh_phong`]) run through the same driver.
+//! Every model is a [`model::Model`] (its checked scene and the options of a call) and is
+//! called through [`model::shade`] and [`model::describe`]. A call runs its kernel block by
+//! block over rayon's threads ([`driver`]), each block loaded into lanes and emitted in the
+//! same vocabulary ([`block`]); `f32` arrays computed in `f64` are widened and rounded once
+//! ([`widen`]). The models:
 //!
-//! Uses [`crate::threejs`], [`crate::gltf`], [`crate::gl`], [`crate::numbers`], [`crate::simd`], [`crate::memory`] and
-//! [`crate::errors`].
+//! | model | state | what it is |
+//! |---|---|---|
+//! | [`fixed_function`] | [`crate::gl`] | OpenGL 2.1's fixed-function lighting equation, in eye coordinates |
+//! | [`metallic_roughness`] | [`crate::gltf`] | glTF 2.0's metallic-roughness model as pyrender's shader evaluates it |
+//! | [`mesh_phong`] | [`crate::threejs`] | three.js' `MeshPhongMaterial` as release 111's shader evaluates it |
+//!
+//! The two world models share one path ([`world`]); what only GL has (shape kernels, the
+//! modelview, accuracy tiers, two-sided colour planes) stays in [`fixed_function`]. Shared by
+//! several models: the clamp option ([`clamp`]), the transform of positions and normals
+//! ([`transform`]) and per-call values rounded to the kernel's type ([`round`]).
+//!
+//! Uses [`crate::threejs`], [`crate::gltf`], [`crate::gl`], [`crate::numbers`],
+//! [`crate::simd`], [`crate::memory`] and [`crate::errors`].
 
-pub mod kernel;
+pub mod block;
+pub mod clamp;
+pub mod driver;
+pub mod fixed_function;
 pub mod mesh_phong;
 pub mod metallic_roughness;
-pub mod plan;
-pub mod power;
-pub mod prepare;
-pub mod shade;
-pub mod shape;
+pub mod model;
+pub mod round;
+pub mod transform;
+pub mod widen;
+pub mod world;

@@ -10,3 +10,4 @@ pub mod pages;
 // The binding's result buffers: nothing in the core allocates them.
 #[cfg_attr(not(feature = "python"), allow(dead_code))]
 pub mod recycle;
+pub mod uninit;

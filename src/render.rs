@@ -3,8 +3,9 @@
 //! ([`clip`]) and set up ([`raster`]), the nearest triangle is found at every pixel
 //! ([`visibility`]), and the visible pixels are lit ([`passes`]).
 //!
-//! The render layer, top of the core: besides those four, [`camera`] (view and projection)
-//! [`mesh`] (what is drawn) and [`shader`] (the lighting model: GL's, glTF's or three.js'). Uses
+//! The render layer, top of the core: besides those four, [`camera`] (view and projection),
+//! [`mesh`] (what is drawn), [`options`] (how) and [`shader`] (the model of the scene, placed
+//! for the camera: GL's, glTF's or three.js'). Uses
 //! every layer below it: [`crate::normals`], [`crate::lighting`], [`crate::gl`],
 //! [`crate::gltf`], [`crate::threejs`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
 //! and [`crate::errors`].
@@ -12,6 +13,7 @@
 pub mod camera;
 pub mod clip;
 pub mod mesh;
+pub mod options;
 pub mod passes;
 pub mod raster;
 pub mod shader;
@@ -23,13 +25,7 @@ use rayon::prelude::*;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::gl::material::ColorMaterial;
-use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
-use crate::gltf::scene::{Scene as GltfSceneData, ValidScene as GltfScene};
-use crate::lighting::mesh_phong::shade::Options as MeshPhongOptions;
-use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
-use crate::lighting::prepare::{ColorClamp, ShadeOptions};
 use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::normals::adjacency::index;
@@ -38,93 +34,16 @@ use crate::numbers::real::Real;
 use crate::render::camera::{check_affine, Camera};
 use crate::render::clip::clip_triangle;
 use crate::render::mesh::Mesh;
-use crate::render::passes::Provoking;
+use crate::render::options::{RenderOptions, Shading};
 use crate::render::passes::{Frame, Pass};
 use crate::render::raster::{Cull, Triangle, Viewport};
-use crate::render::shader::Shader;
+use crate::render::shader::{RenderModel, Shader};
 use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
-use crate::threejs::scene::{Scene as ThreejsSceneData, ValidScene as ThreejsScene, Viewer};
 
 /// Faces per parallel task in triangle setup: a chunk of triangles, since clipping makes at most
 /// seven of a face.
 const FACES_PER_TASK: usize = 4096;
 const _: () = assert!(7 * FACES_PER_TASK < 1 << CHUNK_BITS);
-
-/// Where the lighting equation is evaluated.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Shading {
-    /// Once per face, with the face normal.
-    Flat,
-    /// Once per vertex; colours are interpolated.
-    Gouraud,
-    /// Once per pixel, with interpolated positions and normals.
-    #[default]
-    Phong,
-}
-
-impl Shading {
-    /// Parses `"flat"`, `"gouraud"` or `"phong"`.
-    ///
-    /// # Errors
-    /// A value error naming `shading` for any other string.
-    pub fn parse(name: &str) -> Result<Self, Error> {
-        match name {
-            "flat" => Ok(Self::Flat),
-            "gouraud" => Ok(Self::Gouraud),
-            "phong" => Ok(Self::Phong),
-            _ => Err(Error::value(format!(
-                "shading must be 'flat', 'gouraud' or 'phong', got '{name}'"
-            ))),
-        }
-    }
-}
-
-/// Everything of a render besides the scene, the mesh and the camera.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct RenderOptions {
-    /// The image size.
-    pub viewport: Viewport,
-    /// Flat, Gouraud or Phong.
-    pub shading: Shading,
-    /// Where flat shading lights a face.
-    pub provoking: Provoking,
-    /// Face culling.
-    pub cull: Cull,
-    /// Model to world coordinates (affine).
-    pub model: DMat4,
-    /// The clear colour, RGBA.
-    pub background: [f64; 4],
-    /// `GL_NORMALIZE`, applied wherever the equation is evaluated (after interpolation for
-    /// Phong).
-    pub normalize: bool,
-    /// `GL_RESCALE_NORMAL`.
-    pub rescale_normal: bool,
-    /// `GL_COLOR_MATERIAL`, with [`Mesh::colors`].
-    pub color_material: Option<ColorMaterial>,
-    /// Whether the colours (the equation's and the colour sum) are clamped to [0, 1].
-    pub clamp: ColorClamp,
-}
-
-impl Default for RenderOptions {
-    /// A 512 x 512 Phong render with GL's defaults otherwise, and `GL_NORMALIZE` on.
-    fn default() -> Self {
-        Self {
-            viewport: Viewport {
-                width: 512,
-                height: 512,
-            },
-            shading: Shading::Phong,
-            provoking: Provoking::Last,
-            cull: Cull::None,
-            model: DMat4::IDENTITY,
-            background: [0.0; 4],
-            normalize: true,
-            rescale_normal: false,
-            color_material: None,
-            clamp: ColorClamp::On,
-        }
-    }
-}
 
 /// Checks the arguments of [`render`] that the lighting equation does not check itself.
 fn validate<T: Real>(
@@ -239,13 +158,19 @@ fn setup<T: Real>(
 }
 
 /// Renders `mesh` seen by `camera` under `scene` into `image` ((height, width, 4) RGBA, row 0
-/// at the top) and `depth` ((height, width) window depth in [0, 1], 1 where nothing is drawn).
+/// at the top) and `depth` ((height, width) window depth in [0, 1], 1 where nothing is drawn),
+/// lit by the model of `scene` ([`RenderModel`]).
 ///
-/// Lights and the viewer are in eye coordinates, as for [`crate::lighting::shade::shade`]; positions reach eye
-/// coordinates through `camera.view · options.model`. Pixels no triangle covers get
-/// `options.background`. A face with a vertex that is not finite after the transform is not
-/// drawn; a NaN normal or colour gives NaN pixels, as in [`crate::lighting::shade::shade`]. The result is the same for
-/// any number of threads.
+/// GL's scene: lights and the viewer are in eye coordinates, as for
+/// [`crate::lighting::model::shade`]; positions reach eye coordinates through
+/// `camera.view · options.model`. A world model's scene (glTF's metallic-roughness model,
+/// three.js' `MeshPhongMaterial`) is in world coordinates, its viewer replaced by the camera's
+/// and its normals always normalised (`options.normalize`, `rescale_normal` and
+/// `color_material` do not apply); it takes vertex colours or a texture, not both.
+///
+/// Pixels no triangle covers get `options.background`. A face with a vertex that is not
+/// finite after the transform is not drawn; a NaN normal or colour gives NaN pixels, as in
+/// `shade`. The result is the same for any number of threads.
 ///
 /// `stop` is polled by every pass, at least once per task of rows, faces or triangles; once it
 /// is requested the rest of the work is skipped and `image` and `depth` are left part-drawn.
@@ -255,8 +180,8 @@ fn setup<T: Real>(
 /// option; an index error for a face index out of range; a memory error when a scratch buffer
 /// cannot be allocated; [`Error::interrupted`] when `stop` was requested before the call
 /// finished.
-pub fn render<T: Real>(
-    scene: &ValidScene,
+pub fn render<T: Real, M: RenderModel>(
+    scene: &M,
     mesh: &Mesh<'_, T>,
     camera: &Camera,
     options: &RenderOptions,
@@ -265,131 +190,18 @@ pub fn render<T: Real>(
     stop: &Stop,
 ) -> Result<(), Error> {
     validate(mesh, camera, options, image.len(), depth.len())?;
-    let shade_options = ShadeOptions {
-        modelview: Some(camera.view * options.model),
-        normalize: options.normalize,
-        rescale_normal: options.rescale_normal,
-        color_material: options.color_material,
-        clamp: options.clamp,
-        ..ShadeOptions::default()
-    };
-    let shader = Shader::Gl {
-        scene,
-        options: shade_options,
-    };
-    draw(shader, mesh, camera, options, image, depth, stop)
-}
-
-/// [`render`] with the glTF metallic-roughness model: `scene` is in world coordinates, its
-/// camera position replaced by `camera`'s eye, and vertex colours multiply the result (as
-/// pyrender's `color_multiplier`). `options.normalize`, `rescale_normal` and `color_material`
-/// do not apply (the model always normalises).
-///
-/// # Errors
-/// As [`render`].
-pub fn render_metallic_roughness<T: Real>(
-    scene: &GltfScene,
-    mesh: &Mesh<'_, T>,
-    camera: &Camera,
-    options: &RenderOptions,
-    image: &mut [T],
-    depth: &mut [T],
-    stop: &Stop,
-) -> Result<(), Error> {
-    let frame = validate_world(
-        mesh,
-        camera,
-        options,
-        [image.len(), depth.len()],
-        "the metallic-roughness model takes vertex colours or a base colour texture",
-    )?;
-    let eye = frame.w_axis.truncate().to_array();
-    let placed = GltfSceneData {
-        camera_position: eye,
-        ..(**scene).clone()
-    };
-    let shader = Shader::MetallicRoughness {
-        scene: placed.validated()?,
-        options: Options {
-            model: Some(options.model),
-            clamp: options.clamp,
-            colors: if mesh.textured.is_some() {
-                ColorRole::BaseColor
-            } else {
-                ColorRole::Multiply
-            },
-        },
-    };
-    draw(shader, mesh, camera, options, image, depth, stop)
-}
-
-/// [`render`] with three.js' `MeshPhongMaterial`: `scene` is in world coordinates, its camera
-/// replaced by `camera` (its eye, or for an orthographic projection its +z axis, the shader's
-/// `isOrthographic` view direction), and vertex colours or a texture's sRGB-decoded texels
-/// multiply the material's `color` (three.js' `vertexColors` and `map`). A double-sided
-/// material lights a back-facing triangle with the negated normal. `options.normalize`,
-/// `rescale_normal` and `color_material` do not apply (the model always normalises).
-///
-/// # Errors
-/// As [`render`].
-pub fn render_mesh_phong<T: Real>(
-    scene: &ThreejsScene,
-    mesh: &Mesh<'_, T>,
-    camera: &Camera,
-    options: &RenderOptions,
-    image: &mut [T],
-    depth: &mut [T],
-    stop: &Stop,
-) -> Result<(), Error> {
-    let eye = validate_world(
-        mesh,
-        camera,
-        options,
-        [image.len(), depth.len()],
-        "MeshPhongMaterial takes vertex colours or a colour texture (map)",
-    )?;
-    let p = camera.projection;
-    // An affine projection (bottom row 0, 0, 0, 1) is orthographic.
-    let orthographic = p.x_axis.w == 0.0 && p.y_axis.w == 0.0 && p.z_axis.w == 0.0;
-    let viewer = if orthographic && p.w_axis.w != 0.0 {
-        Viewer::Direction(eye.z_axis.truncate().to_array())
-    } else {
-        Viewer::Position(eye.w_axis.truncate().to_array())
-    };
-    let placed = ThreejsSceneData {
-        viewer,
-        ..(**scene).clone()
-    };
-    let shader = Shader::MeshPhong {
-        scene: placed.validated()?,
-        options: MeshPhongOptions {
-            model: Some(options.model),
-            clamp: options.clamp,
-        },
-    };
-    draw(shader, mesh, camera, options, image, depth, stop)
-}
-
-/// [`validate`] for a model in world coordinates, which takes vertex colours or a texture but
-/// not both (`takes`: the model and what it takes, for the error); returns the camera's frame
-/// in world coordinates (the inverse of the view), where the model's viewer is.
-fn validate_world<T: Real>(
-    mesh: &Mesh<'_, T>,
-    camera: &Camera,
-    options: &RenderOptions,
-    [image, depth]: [usize; 2],
-    takes: &str,
-) -> Result<DMat4, Error> {
-    validate(mesh, camera, options, image, depth)?;
-    if mesh.textured.is_some() && mesh.colors.is_some() {
-        return Err(Error::value(format!("{takes}, not both")));
+    if let Some(takes) = M::COLORS_OR_TEXTURE {
+        if mesh.textured.is_some() && mesh.colors.is_some() {
+            return Err(Error::value(format!("{takes}, not both")));
+        }
     }
-    Ok(camera.view.inverse())
+    let shader = Shader::new(scene, camera, options, mesh.textured.is_some())?;
+    draw(shader, mesh, camera, options, image, depth, stop)
 }
 
 /// The pipeline of [`render`] after validation, lit by `shader`.
-fn draw<T: Real>(
-    shader: Shader<'_>,
+fn draw<T: Real, M: RenderModel>(
+    shader: Shader<'_, M>,
     mesh: &Mesh<'_, T>,
     camera: &Camera,
     options: &RenderOptions,
@@ -440,6 +252,7 @@ mod tests {
     use super::*;
     use crate::gl::material::Material;
     use crate::gl::scene::Scene;
+    use crate::render::options::Provoking;
 
     fn emission_scene() -> Scene {
         Scene {
@@ -561,11 +374,9 @@ mod tests {
         let err = visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap_err();
         assert!(interrupted(err));
         let scene = emission_scene().validated().unwrap();
+        let camera = Camera::default();
         let pass = Pass {
-            shader: Shader::Gl {
-                scene: &scene,
-                options: ShadeOptions::default(),
-            },
+            shader: Shader::new(&scene, &camera, &RenderOptions::default(), false).unwrap(),
             mesh: &quad(),
             frame: Frame::new(viewport, &triangles, &ids).unwrap(),
             background: [0.0; 4],

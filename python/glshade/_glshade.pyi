@@ -1,6 +1,6 @@
 """Type stub of the native module. Use the `glshade` package: its intake prepares the arrays."""
 
-from typing import Any, final
+from typing import Any, TypeAlias, final
 
 import numpy as np
 from numpy.typing import NDArray
@@ -16,19 +16,14 @@ __all__ = [
     "blend",
     "crease_normals",
     "describe",
-    "describe_gltf",
-    "describe_threejs",
     "face_normals",
     "hillshade",
-    "lean_directional",
     "look_at",
     "orthographic",
     "perspective",
     "render",
     "shade",
-    "shade_gltf",
     "shade_normals",
-    "shade_threejs",
     "stream",
     "vertex_normals",
 ]
@@ -94,47 +89,41 @@ class Scene:
     def specular_gate(self) -> bool: ...
     def __getnewargs_ex__(self) -> tuple[tuple[Lights, Material], dict[str, Any]]: ...
 
+_AnyScene: TypeAlias = Scene | GltfScene | ThreejsScene
+
 def shade(
     positions: NDArray[np.floating[Any]],
     normals: NDArray[np.floating[Any]],
-    scene: Scene,
+    scene: _AnyScene,
     *,
-    modelview: NDArray[np.float64] | None,
-    normalize: bool,
-    rescale_normal: bool,
     colors: NDArray[np.floating[Any]] | None,
-    color_material: str | None,
-    color_material_face: str,
     accuracy: str,
-    strict: bool,
     clamp: bool,
     out: NDArray[np.floating[Any]] | None,
+    modelview: NDArray[np.float64] | None = None,
+    normalize: bool = False,
+    rescale_normal: bool = False,
+    color_material: str | None = None,
+    color_material_face: str = "front_and_back",
+    strict: bool = False,
 ) -> NDArray[np.floating[Any]]: ...
 def stream(
     positions: NDArray[np.floating[Any]],
     normals: NDArray[np.floating[Any]],
     read_positions: bool,
 ) -> NDArray[np.floating[Any]]: ...
-def lean_directional(
-    scene: Scene,
-    normals: NDArray[np.floating[Any]],
-    *,
-    nan: bool = False,
-    power: bool = False,
-    saturate: bool = False,
-) -> NDArray[np.floating[Any]]: ...
 def describe(
-    scene: Scene,
+    scene: _AnyScene,
     *,
-    modelview: NDArray[np.float64] | None,
-    normalize: bool,
-    rescale_normal: bool,
-    color_material: str | None,
-    color_material_face: str,
-    accuracy: str,
-    strict: bool,
-    clamp: bool,
     dtype: str,
+    accuracy: str,
+    clamp: bool,
+    modelview: NDArray[np.float64] | None = None,
+    normalize: bool = False,
+    rescale_normal: bool = False,
+    color_material: str | None = None,
+    color_material_face: str = "front_and_back",
+    strict: bool = False,
 ) -> str: ...
 def face_normals(
     vertices: NDArray[np.floating[Any]], faces: NDArray[np.int64]
@@ -154,7 +143,7 @@ def orthographic(
 def render(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],
-    scene: Scene | GltfScene | ThreejsScene,
+    scene: _AnyScene,
     *,
     view: NDArray[np.float64],
     projection: NDArray[np.float64],
@@ -165,10 +154,6 @@ def render(
     provoking_vertex: str,
     normals: NDArray[np.floating[Any]] | None,
     colors: NDArray[np.floating[Any]] | None,
-    color_material: str | None,
-    color_material_face: str,
-    normalize: bool,
-    rescale_normal: bool,
     cull: str,
     background: NDArray[np.float64],
     clamp: bool,
@@ -176,6 +161,10 @@ def render(
     uv: NDArray[np.floating[Any]] | None,
     texture_filter: str,
     texture_wrap: tuple[str, str],
+    color_material: str | None = None,
+    color_material_face: str = "front_and_back",
+    normalize: bool = True,
+    rescale_normal: bool = False,
 ) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...
 
 @final
@@ -202,24 +191,6 @@ class GltfScene:
         camera_position: tuple[float, ...],
     ) -> GltfScene: ...
 
-def shade_gltf(
-    positions: NDArray[np.floating[Any]],
-    normals: NDArray[np.floating[Any]],
-    scene: GltfScene,
-    *,
-    colors: NDArray[np.floating[Any]] | None,
-    model: NDArray[np.float64] | None,
-    clamp: bool,
-    out: NDArray[np.floating[Any]] | None,
-) -> NDArray[np.floating[Any]]: ...
-def describe_gltf(
-    scene: GltfScene,
-    *,
-    model: NDArray[np.float64] | None,
-    clamp: bool,
-    dtype: str,
-) -> str: ...
-
 @final
 class ThreejsScene:
     def __new__(
@@ -238,23 +209,6 @@ class ThreejsScene:
         physically_correct_lights: bool,
     ) -> ThreejsScene: ...
 
-def shade_threejs(
-    positions: NDArray[np.floating[Any]],
-    normals: NDArray[np.floating[Any]],
-    scene: ThreejsScene,
-    *,
-    colors: NDArray[np.floating[Any]] | None,
-    model: NDArray[np.float64] | None,
-    clamp: bool,
-    out: NDArray[np.floating[Any]] | None,
-) -> NDArray[np.floating[Any]]: ...
-def describe_threejs(
-    scene: ThreejsScene,
-    *,
-    model: NDArray[np.float64] | None,
-    clamp: bool,
-    dtype: str,
-) -> str: ...
 def crease_normals(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],

@@ -14,9 +14,7 @@ from dask.delayed import delayed
 from numpy.typing import ArrayLike, NDArray
 
 from ._intake import accuracy_choice
-from ._scene import Scene
-from .gltf import Scene as GltfScene
-from .threejs import Scene as ThreejsScene
+from ._scenes import AnyScene
 
 __all__ = ["shade_lazily"]
 
@@ -27,7 +25,7 @@ def shade_lazily(
     shade: ShadeFunction,
     positions: ArrayLike | da.Array,
     normals: ArrayLike | da.Array,
-    scene: Scene | GltfScene | ThreejsScene,
+    scene: AnyScene,
     colors: ArrayLike | da.Array | None,
     shade_kwargs: Mapping[str, Any],
 ) -> da.Array:

@@ -3,7 +3,7 @@ transfer function."""
 
 from __future__ import annotations
 
-from typing import Any, Literal, overload
+from typing import TYPE_CHECKING, Any, Literal, cast, overload
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -11,28 +11,18 @@ from numpy.typing import ArrayLike
 from . import _glshade
 from ._camera import Camera
 from ._image import Image
-from ._intake import (
-    choice,
-    color,
-    flag,
-    integer,
-    one_of,
-    optional_choice,
-    rgba,
-    transform,
-    warn_if_bytes,
-)
+from ._intake import choice, color, flag, integer, one_of, rgba, transform, warn_if_bytes
 from ._pyrender import is_pyrender_scene, render_pyrender
 from ._render_input import render_input
-from ._scene import Scene
+from ._scenes import AnyScene
 from ._texture import FILTERS, texels, wrap_modes
 from ._transfer import Transfer, apply_transfer, transfer_name
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, ProvokingVertex, Shading, Space
-from .gltf import Scene as GltfScene
-from .threejs import Scene as ThreejsScene
 
-# The triangles three.js discards for each material side (its face culling).
-_THREEJS_CULL: dict[str, Cull | None] = {"front": "back", "back": "front", "double": None}
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from ._render_options import RenderOptions
 
 __all__ = ["render"]
 
@@ -40,94 +30,37 @@ __all__ = ["render"]
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
-    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
+    faces: ArrayLike | AnyScene | None = ...,
+    scene: AnyScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    provoking_vertex: ProvokingVertex = ...,
-    normals: ArrayLike | None = ...,
-    colors: ArrayLike | Literal[False] | None = ...,
-    color_material: ColorMaterialMode | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer | None = ...,
-    clamp: bool = ...,
-    texture: Any = ...,
-    uv: ArrayLike | None = ...,
-    texture_filter: str = ...,
-    texture_wrap: str | tuple[str, str] = ...,
     depth: Literal[False] = ...,
+    **options: Unpack[RenderOptions],
 ) -> Image: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
-    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
+    faces: ArrayLike | AnyScene | None = ...,
+    scene: AnyScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    provoking_vertex: ProvokingVertex = ...,
-    normals: ArrayLike | None = ...,
-    colors: ArrayLike | Literal[False] | None = ...,
-    color_material: ColorMaterialMode | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer | None = ...,
-    clamp: bool = ...,
-    texture: Any = ...,
-    uv: ArrayLike | None = ...,
-    texture_filter: str = ...,
-    texture_wrap: str | tuple[str, str] = ...,
     depth: Literal[True],
+    **options: Unpack[RenderOptions],
 ) -> tuple[Image, FloatArray]: ...
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = ...,
-    scene: Scene | GltfScene | ThreejsScene | Camera | None = ...,
+    faces: ArrayLike | AnyScene | None = ...,
+    scene: AnyScene | Camera | None = ...,
     camera: Camera | None = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    provoking_vertex: ProvokingVertex = ...,
-    normals: ArrayLike | None = ...,
-    colors: ArrayLike | Literal[False] | None = ...,
-    color_material: ColorMaterialMode | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer | None = ...,
-    clamp: bool = ...,
-    texture: Any = ...,
-    uv: ArrayLike | None = ...,
-    texture_filter: str = ...,
-    texture_wrap: str | tuple[str, str] = ...,
     depth: bool,
+    **options: Unpack[RenderOptions],
 ) -> Image | tuple[Image, FloatArray]: ...
 def render(
     vertices: Any,
-    faces: ArrayLike | Scene | GltfScene | ThreejsScene | None = None,
-    scene: Scene | GltfScene | ThreejsScene | Camera | None = None,
+    faces: ArrayLike | AnyScene | None = None,
+    scene: AnyScene | Camera | None = None,
     camera: Camera | None = None,
     *,
     width: int = 512,
@@ -346,22 +279,14 @@ def render(
         uv=uv,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
-    if isinstance(given.scene, (GltfScene, ThreejsScene)):
-        gl_only = {
-            "color_material": color_material is None,
-            "rescale_normal": rescale_normal is False,
-            "normalize": normalize is True,
-            "color_material_face": color_material_face == "front_and_back",
-        }
-        for name, default in gl_only.items():
-            if not default:
-                raise TypeError(
-                    f"{name} applies to the GL model (glshade.Scene), not to a "
-                    f"glshade.{type(given.scene).__module__.rsplit('.', 1)[-1]}.Scene (normals "
-                    f"are always normalised and vertex colours multiply a material colour)"
-                )
-    if cull is None and isinstance(given.scene, ThreejsScene):
-        cull = _THREEJS_CULL[given.scene.material.side]
+    gl_options = {
+        "color_material": (color_material, None),
+        "color_material_face": (color_material_face, "front_and_back"),
+        "normalize": (normalize, True), "rescale_normal": (rescale_normal, False),
+    }  # fmt: skip
+    gl = given.scene._gl_options(gl_options, colors=c is not None)
+    if cull is None:
+        cull = cast(Cull | None, given.scene._default_cull())
     clear = rgba(background, "background")
     warn_if_bytes(color(background, "background"), "background", "render")
     image, z = _glshade.render(
@@ -379,10 +304,6 @@ def render(
         ),
         normals=n,
         colors=c,
-        color_material=optional_choice(given.color_material, "color_material"),
-        color_material_face=choice(color_material_face, "color_material_face"),
-        normalize=flag(normalize, "normalize"),
-        rescale_normal=flag(rescale_normal, "rescale_normal"),
         cull="none" if cull is None else choice(cull, "cull"),
         background=np.array(clear),
         clamp=flag(clamp, "clamp"),
@@ -390,6 +311,7 @@ def render(
         uv=given.uv,
         texture_filter=one_of(texture_filter, "texture_filter", FILTERS),
         texture_wrap=wrap_modes(texture_wrap),
+        **gl,
     )
     result = apply_transfer(image, encoding).view(Image)
     return (result, z) if depth else result

@@ -13,25 +13,24 @@ from numpy.typing import ArrayLike, NDArray
 from ._camera import Camera
 from ._framing import default_scene, frame
 from ._intake import color_values, one_of, rows, transform, vertex_colors
+from ._model import SCENES, Model, is_scene
 from ._normals import vertex_normals
-from ._scene import Scene
 from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors, mesh_texture
 from ._typing import FloatArray
-from .gltf import Scene as GltfScene
-from .threejs import Scene as ThreejsScene
 
 
 @dataclass
 class RenderInput:
     """vertices (n, 3), faces (m, 3) int64, normals and colours (None or checked rows), the
-    colour-material mode, the scene with lights and viewer in eye coordinates, the camera."""
+    colour-material mode (GL's), the scene a render lights with (GL's with lights and viewer in
+    eye coordinates), the camera."""
 
     vertices: FloatArray
     faces: NDArray[np.int64]
     normals: FloatArray | None
     colors: FloatArray | None
     color_material: str | None
-    scene: Scene | GltfScene | ThreejsScene
+    scene: Model
     camera: Camera
     uv: FloatArray | None = None
     texture: Any = None
@@ -45,7 +44,7 @@ def is_pair(obj: Any) -> bool:
         and len(obj) == 2
         and np.ndim(obj[0]) == 2
         and np.ndim(obj[1]) == 2
-        and not isinstance(obj[0], (Scene, GltfScene, ThreejsScene, Camera))
+        and not (is_scene(obj[0]) or isinstance(obj[0], Camera))
     )
 
 
@@ -54,16 +53,14 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     camera)``, ``(mesh, scene, camera)``, ``(mesh, camera)``, ``(vertices, faces, camera)``,
     a mesh being an object with ``.vertices`` and ``.faces`` or a ``(vertices, faces)`` tuple;
     scene and camera None where not given. A TypeError names what does not fit."""
-    if is_pair(vertices) and (
-        faces is None or isinstance(faces, (Scene, GltfScene, ThreejsScene, Camera))
-    ):
+    if is_pair(vertices) and (faces is None or is_scene(faces) or isinstance(faces, Camera)):
         if camera is not None:
             raise TypeError(
                 "render((vertices, faces), scene, camera) takes a scene and a camera after the "
                 f"mesh, got a {type(camera).__name__} as well"
             )
         (vertices, faces), scene, camera = vertices, faces, scene
-    if isinstance(faces, (Scene, GltfScene, ThreejsScene, Camera)):
+    if is_scene(faces) or isinstance(faces, Camera):
         if not is_mesh(vertices):
             raise TypeError(
                 "faces is required unless the first argument is a mesh with .vertices and "
@@ -79,11 +76,10 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
     if isinstance(scene, Camera) and camera is None:
         scene, camera = None, scene  # render(mesh, camera): the default scene
     order = "the call is render(vertices, faces, scene, camera) or render(mesh, scene, camera)"
-    if scene is not None and not isinstance(scene, (Scene, GltfScene, ThreejsScene)):
+    if scene is not None and not is_scene(scene):
         raise TypeError(
-            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, or None "
-            f"for the default key light, got "
-            f"{type(scene)!r}; {order}"
+            f"scene must be {SCENES}, or None for the default key light, got {type(scene)!r}; "
+            f"{order}"
         )
     if camera is not None and not isinstance(camera, Camera):
         raise TypeError(
@@ -181,12 +177,8 @@ def render_input(
             t = None if t is None else t[f].reshape(-1, 2)
             f = np.arange(3 * len(f), dtype=np.int64).reshape(-1, 3)
     image = None if t is None else texture
-    if isinstance(scene, (GltfScene, ThreejsScene)):
-        # World coordinates always; the native render puts the camera at the view's eye.
-        return RenderInput(v, f, n, c, None, scene, camera, t, image)
     if scene is None:
         # The default lights belong to the world: an orbiting camera sees them stay put.
-        eye_scene = default_scene().in_eye_space(camera.view)
-    else:
-        eye_scene = scene.in_eye_space(camera.view) if space == "world" else scene
-    return RenderInput(v, f, n, c, color_material, eye_scene, camera, t, image)
+        scene, space = default_scene(), "world"
+    lit = scene._lit_scene(camera.view, space)
+    return RenderInput(v, f, n, c, color_material, lit, camera, t, image)

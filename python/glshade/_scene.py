@@ -7,7 +7,7 @@ object to the core as it is. GL's defaults are the core's, read from the native 
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable, Mapping
 from typing import Any, Literal
 
 import numpy as np
@@ -27,6 +27,7 @@ from ._intake import (
     rgba,
     warn_if_bytes,
 )
+from ._model import Model
 from ._typing import Accuracy, Float64Array
 
 __all__ = ["Light", "Lights", "Material", "Scene"]
@@ -456,7 +457,7 @@ class Material:
     __hash__ = None  # type: ignore[assignment]
 
 
-class Scene:
+class Scene(Model):
     """Lights, materials and the light model (``glLightModel``) of one lit scene.
 
     Parameters
@@ -497,6 +498,8 @@ class Scene:
     """
 
     __slots__ = ("_lights", "_native", "back_material", "material")
+
+    _native: _glshade.Scene
 
     def __init__(
         self,
@@ -642,18 +645,28 @@ class Scene:
         name = np.dtype(dtype).name
         if name not in ("float16", "float32", "float64"):
             raise TypeError(f"dtype must be float32 or float64, got {name}")
+        options = {
+            "modelview": modelview, "normalize": normalize, "rescale_normal": rescale_normal,
+            "color_material": color_material, "color_material_face": color_material_face,
+            "strict": strict,
+        }  # fmt: skip
         return _glshade.describe(
             self._native,
-            modelview=None if modelview is None else matrix(modelview, "modelview"),
-            normalize=flag(normalize, "normalize"),
-            rescale_normal=flag(rescale_normal, "rescale_normal"),
-            color_material=optional_choice(color_material, "color_material"),
-            color_material_face=choice(color_material_face, "color_material_face"),
-            accuracy=accuracy_choice(accuracy),
-            strict=flag(strict, "strict"),
-            clamp=flag(clamp, "clamp"),
             dtype="float64" if name == "float64" else "float32",
+            accuracy=accuracy_choice(accuracy),
+            clamp=flag(clamp, "clamp"),
+            **_native_gl_options(options),
         )
+
+    def _gl_options(self, given: Mapping[str, tuple[Any, Any]], *, colors: bool) -> dict[str, Any]:
+        values = {name: value for name, (value, _) in given.items()}
+        if colors and "color_material" in values:
+            # Colours without a mode track GL's default, GL_AMBIENT_AND_DIFFUSE.
+            values["color_material"] = values["color_material"] or "ambient_and_diffuse"
+        return _native_gl_options(values)
+
+    def _lit_scene(self, view: ArrayLike, lights_in: str) -> Scene:
+        return self.in_eye_space(view) if lights_in == "world" else self
 
     def in_eye_space(self, view: ArrayLike) -> Scene:
         """This scene with its lights and viewer given in world coordinates, moved into eye
@@ -730,3 +743,19 @@ def _frozen(values: Any) -> Float64Array:
     a = np.array(values, dtype=np.float64)
     a.flags.writeable = False
     return a
+
+
+# GL's options as the binding takes them, each checked and converted by its name.
+_GL_OPTIONS: dict[str, Callable[[Any], Any]] = {
+    "modelview": lambda m: None if m is None else matrix(m, "modelview"),
+    "normalize": lambda v: flag(v, "normalize"),
+    "rescale_normal": lambda v: flag(v, "rescale_normal"),
+    "color_material": lambda v: optional_choice(v, "color_material"),
+    "color_material_face": lambda v: choice(v, "color_material_face"),
+    "strict": lambda v: flag(v, "strict"),
+}
+
+
+def _native_gl_options(values: Mapping[str, Any]) -> dict[str, Any]:
+    """`values` of GL's options (any of `_GL_OPTIONS`), checked and converted."""
+    return {name: _GL_OPTIONS[name](value) for name, value in values.items()}

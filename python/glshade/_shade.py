@@ -4,14 +4,15 @@ collections go to `_lazy`, which shades them chunk by chunk with this same funct
 from __future__ import annotations
 
 import functools
-from collections.abc import Callable, Mapping
+from collections.abc import Callable
 from typing import ParamSpec, TypeVar, cast
 
 from numpy.typing import ArrayLike
 
-from . import _glshade, gltf, threejs
-from ._intake import accuracy_choice, choice, flag, matrix, optional_choice, out_array, vertices
-from ._scene import Scene
+from . import _glshade
+from ._intake import accuracy_choice, flag, out_array, vertices
+from ._model import SCENES, is_scene
+from ._scenes import AnyScene
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
 
 __all__ = ["shade"]
@@ -26,7 +27,7 @@ def _names_missing_normals(function: Callable[_P, _R]) -> Callable[_P, _R]:
 
     @functools.wraps(function)
     def checked(*args: _P.args, **kwargs: _P.kwargs) -> _R:
-        if len(args) == 2 and isinstance(args[1], Scene) and "scene" not in kwargs:
+        if len(args) == 2 and is_scene(args[1]) and "scene" not in kwargs:
             raise TypeError(
                 "shade() is missing its normals: the call is gs.shade(positions, normals, "
                 "scene), and the second argument was the Scene. Give one normal per position, "
@@ -43,7 +44,7 @@ def _names_missing_normals(function: Callable[_P, _R]) -> Callable[_P, _R]:
 def shade(
     positions: ArrayLike,
     normals: ArrayLike,
-    scene: Scene | gltf.Scene | threejs.Scene,
+    scene: AnyScene,
     *,
     modelview: ArrayLike | None = None,
     normalize: bool = False,
@@ -150,11 +151,8 @@ def shade(
     >>> gs.shade(np.zeros((480, 640, 3), np.float32), (0, 0, 1), scene).shape  # one normal for all
     (480, 640, 4)
     """
-    if not isinstance(scene, (Scene, gltf.Scene, threejs.Scene)):
-        raise TypeError(
-            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, got "
-            f"{type(scene)!r}"
-        )
+    if not is_scene(scene):
+        raise TypeError(f"scene must be {SCENES}, got {type(scene)!r}")
     # Before the dask branch, so a lazy call warns once, here, and its tasks get "fast".
     mode = accuracy_choice(accuracy)
     if any(_is_dask(x) for x in (positions, normals, colors)):
@@ -172,73 +170,20 @@ def shade(
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
-    if isinstance(scene, (gltf.Scene, threejs.Scene)):
-        gl_options = {
-            "modelview": (modelview, None), "normalize": (normalize, False),
-            "rescale_normal": (rescale_normal, False), "color_material": (color_material, None),
-            "color_material_face": (color_material_face, "front_and_back"),
-            "strict": (strict, False),
-        }  # fmt: skip
-        return _shade_world(positions, normals, scene, colors, mode, clamp, out, gl_options)
     p, n, c = vertices(positions, normals, colors)
-    if c is not None:
-        color_material = color_material or "ambient_and_diffuse"
+    gl_options = {
+        "modelview": (modelview, None), "normalize": (normalize, False),
+        "rescale_normal": (rescale_normal, False), "color_material": (color_material, None),
+        "color_material_face": (color_material_face, "front_and_back"),
+        "strict": (strict, False),
+    }  # fmt: skip
+    gl = scene._gl_options(gl_options, colors=c is not None)
     if out is not None:
         out = out_array(out, {"positions": p, "normals": n, "colors": c})
     result: FloatArray = _glshade.shade(
-        p,
-        n,
-        scene._native,
-        modelview=None if modelview is None else matrix(modelview, "modelview"),
-        normalize=flag(normalize, "normalize"),
-        rescale_normal=flag(rescale_normal, "rescale_normal"),
-        colors=c,
-        color_material=optional_choice(color_material, "color_material"),
-        color_material_face=choice(color_material_face, "color_material_face"),
-        accuracy=mode,
-        strict=flag(strict, "strict"),
-        clamp=flag(clamp, "clamp"),
-        out=out,
+        p, n, scene._native, colors=c, accuracy=mode, clamp=flag(clamp, "clamp"), out=out, **gl
     )
     return result
-
-
-def _shade_world(
-    positions: ArrayLike,
-    normals: ArrayLike,
-    scene: gltf.Scene | threejs.Scene,
-    colors: ArrayLike | None,
-    accuracy: str,
-    clamp: bool,
-    out: FloatArray | None,
-    gl_options: Mapping[str, tuple[object, object]],
-) -> FloatArray:
-    """`shade` with a world-space model (glTF's metallic-roughness, three.js'
-    ``MeshPhongMaterial``); the GL model's options must be left at their defaults. Both
-    accuracies compute in float64 (float32 arrays widened, the result rounded once): the
-    models' float32 arithmetic is not within 1e-5 where they are ill-conditioned."""
-    for name, (value, default) in gl_options.items():
-        same = value is default or (isinstance(value, (bool, str)) and value == default)
-        if not same:
-            raise TypeError(
-                f"{name} applies to the GL model (glshade.Scene), not to a "
-                f"glshade.{type(scene).__module__.rsplit('.', 1)[-1]}.Scene "
-                f"(normals are always normalised, positions are in world coordinates), got "
-                f"{name}={value!r}"
-            )
-    if accuracy not in ("fast", "exact"):
-        raise ValueError(f"accuracy must be 'fast' or 'exact', got {accuracy!r}")
-    p, n, c = vertices(positions, normals, colors)
-    if out is not None:
-        out = out_array(out, {"positions": p, "normals": n, "colors": c})
-    unclamped = not flag(clamp, "clamp")
-    if isinstance(scene, gltf.Scene):
-        return _glshade.shade_gltf(
-            p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
-        )
-    return _glshade.shade_threejs(
-        p, n, scene._native, colors=c, model=None, clamp=not unclamped, out=out
-    )
 
 
 def _is_dask(x: object) -> bool:

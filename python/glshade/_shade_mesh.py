@@ -10,14 +10,14 @@ from numpy.typing import ArrayLike
 from ._camera import Camera
 from ._framing import default_scene, frame
 from ._intake import matrix, one_of
+from ._model import SCENES, is_scene
 from ._normals import face_normals, vertex_normals
 from ._render_input import is_pair
 from ._scene import Scene
+from ._scenes import AnyScene
 from ._shade import shade
 from ._trimesh import mesh_arrays
 from ._typing import FloatArray, Per, Weighting
-from .gltf import Scene as GltfScene
-from .threejs import Scene as ThreejsScene
 
 __all__ = ["shade_mesh"]
 
@@ -26,7 +26,7 @@ def shade_mesh(
     vertices: Any,
     faces: ArrayLike | None = None,
     *,
-    scene: Scene | GltfScene | ThreejsScene | None = None,
+    scene: AnyScene | None = None,
     per: Per = "vertex",
     weighting: Weighting = "angle",
     **shade_kwargs: Any,
@@ -80,17 +80,15 @@ def shade_mesh(
     >>> gs.shade_mesh(gs.meshes.icosphere(1)).shape  # the default scene
     (42, 4)
     """
-    if isinstance(faces, (Scene, Camera)):
+    if is_scene(faces) or isinstance(faces, Camera):
         raise TypeError(
             f"shade_mesh got a {type(faces).__name__} as faces: the scene is a keyword "
             "argument, gs.shade_mesh(mesh, scene=scene) or gs.shade_mesh(vertices, faces, "
             "scene=scene)"
         )
-    if scene is not None and not isinstance(scene, (Scene, GltfScene, ThreejsScene)):
+    if scene is not None and not is_scene(scene):
         raise TypeError(
-            f"scene must be a glshade.Scene, glshade.gltf.Scene or glshade.threejs.Scene, or "
-            f"None for the default "
-            f"lights, got {type(scene)!r}"
+            f"scene must be {SCENES}, or None for the default lights, got {type(scene)!r}"
         )
     where = one_of(per, "per", ("vertex", "face"))
     weights = cast(Weighting, one_of(weighting, "weighting", ("angle", "area", "uniform")))

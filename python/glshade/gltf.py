@@ -32,9 +32,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import color, number, vector
+from ._intake import color, vector
 from ._records import ValueRecord, set_field
 from ._typing import Float64Array
+from ._world import WorldScene, record_fields, set_fields
 
 __all__ = ["DirectionalLight", "Material", "PointLight", "Scene", "SpotLight"]
 
@@ -63,10 +64,11 @@ class Material(ValueRecord):
     TypeError
         For a non-numeric value.
     ValueError
-        For a wrong shape or a value outside its range.
+        For a base colour of another shape than (3,) or (4,), a factor outside [0, 1] or a
+        negative emission.
     """
 
-    base_color: tuple[float, ...]
+    base_color: tuple[float, float, float, float]
     metallic: float
     roughness: float
     emissive: tuple[float, ...]
@@ -82,9 +84,7 @@ class Material(ValueRecord):
         if base.shape not in ((3,), (4,)):
             raise ValueError(f"base_color must have shape (3,) or (4,), got shape {base.shape}")
         set_field(self, "base_color", (*(float(x) for x in base), 1.0)[:4])
-        set_field(self, "metallic", number(metallic, "metallic"))
-        set_field(self, "roughness", number(roughness, "roughness"))
-        set_field(self, "emissive", vector(emissive, "emissive"))
+        set_fields(self, locals())  # the others
         # The native scene checks ranges; checking here too names the value at its source.
         _native_scene([], self, (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
@@ -114,9 +114,7 @@ class DirectionalLight(ValueRecord):
         intensity: float = 1.0,
         direction: ArrayLike = (0.0, 0.0, -1.0),
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "direction", vector(direction, "direction"))
+        set_fields(self, locals())
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -145,9 +143,7 @@ class PointLight(ValueRecord):
         intensity: float = 1.0,
         position: ArrayLike = (0.0, 0.0, 0.0),
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "position", vector(position, "position"))
+        set_fields(self, locals())
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -190,12 +186,7 @@ class SpotLight(ValueRecord):
         inner_cone_angle: float = 0.0,
         outer_cone_angle: float = math.pi / 4,
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "position", vector(position, "position"))
-        set_field(self, "direction", vector(direction, "direction"))
-        set_field(self, "inner_cone_angle", number(inner_cone_angle, "inner_cone_angle"))
-        set_field(self, "outer_cone_angle", number(outer_cone_angle, "outer_cone_angle"))
+        set_fields(self, locals())
         _native_scene([self], Material(), (0.0, 0.0, 0.0), (0.0, 0.0, 0.0))
 
 
@@ -218,18 +209,14 @@ def _row(light: Light) -> tuple[Any, ...]:
 def _native_scene(
     lights: list[Light], material: Material, ambient: tuple[float, ...], camera: tuple[float, ...]
 ) -> _glshade.GltfScene:
+    """The native scene, which checks every value (the material's fields are its keywords)."""
+    rows = [_row(light) for light in lights]
     return _glshade.GltfScene(
-        lights=[_row(light) for light in lights],
-        base_color=material.base_color,
-        metallic=material.metallic,
-        roughness=material.roughness,
-        emissive=material.emissive,
-        ambient_light=ambient,
-        camera_position=camera,
+        lights=rows, ambient_light=ambient, camera_position=camera, **record_fields(material)
     )
 
 
-class Scene:
+class Scene(WorldScene[Light, Material]):
     """Lights, one material, the ambient light and the camera, in world coordinates: what
     pyrender's shader reads for one mesh.
 
@@ -250,13 +237,15 @@ class Scene:
     TypeError
         For a light or material of another type, or a non-numeric value.
     ValueError
-        For a value outside its range.
+        For a negative or non-finite ambient light, or a camera position that is not finite.
     """
 
-    __slots__ = ("_ambient_light", "_camera_position", "_lights", "_material", "_native")
+    __slots__ = ("_ambient_light",)
 
-    outputs: tuple[str, ...] = ("color",)
-    """The names of the colours `shade` returns: one, linear RGBA."""
+    _native: _glshade.GltfScene
+
+    _LIGHTS = (DirectionalLight, PointLight, SpotLight)
+    _MATERIAL = Material
 
     def __init__(
         self,
@@ -266,89 +255,21 @@ class Scene:
         ambient_light: ArrayLike = (0.0, 0.0, 0.0),
         camera_position: ArrayLike = (0.0, 0.0, 0.0),
     ) -> None:
-        self._lights = tuple(lights)
-        for i, light in enumerate(self._lights):
-            if not isinstance(light, (DirectionalLight, PointLight, SpotLight)):
-                raise TypeError(
-                    f"lights[{i}] must be a glshade.gltf DirectionalLight, PointLight or "
-                    f"SpotLight, got {type(light)!r}"
-                )
-        material = Material() if material is None else material
-        if not isinstance(material, Material):
-            raise TypeError(f"material must be a glshade.gltf.Material, got {type(material)!r}")
-        self._material = material
+        self._take(lights, material)
         self._ambient_light = vector(ambient_light, "ambient_light")
         self._camera_position = vector(camera_position, "camera_position")
         self._native = _native_scene(
-            list(self._lights), material, self._ambient_light, self._camera_position
+            list(self._lights), self.material, self._ambient_light, self._camera_position
         )
-
-    @property
-    def lights(self) -> tuple[Light, ...]:
-        """The lights, in summation order."""
-        return self._lights
-
-    @property
-    def material(self) -> Material:
-        """The material."""
-        return self._material
 
     @property
     def ambient_light(self) -> Float64Array:
         """(3,) The ambient light."""
         return np.array(self._ambient_light)
 
-    @property
-    def camera_position(self) -> Float64Array:
-        """(3,) Where the camera is."""
-        return np.array(self._camera_position)
-
     def with_camera(self, camera_position: ArrayLike) -> Scene:
         """The same scene seen from `camera_position`."""
-        return Scene(
-            self._lights,
-            self._material,
-            ambient_light=self._ambient_light,
-            camera_position=camera_position,
-        )
+        return Scene(**{**self._fields(), "camera_position": camera_position})
 
-    def plan(self, dtype: Any = np.float32, *, clamp: bool = True) -> str:
-        """One line saying what `glshade.shade` computes for this scene with arrays of `dtype`:
-        the arithmetic (float64, float32 arrays widened), the instruction set, the lanes per
-        block, and which lights and terms run
-        (a light of zero intensity or colour is skipped; the diffuse part runs only for
-        metallic < 1 and a base colour that is not black).
-        """
-        name = np.dtype(dtype).name
-        if name not in ("float32", "float64"):
-            raise ValueError(f"dtype must be float32 or float64, got {name}")
-        return str(_glshade.describe_gltf(self._native, model=None, clamp=clamp, dtype=name))
-
-    def __repr__(self) -> str:
-        return (
-            f"gltf.Scene(lights={list(self._lights)!r}, material={self._material!r}, "
-            f"ambient_light={self._ambient_light}, camera_position={self._camera_position})"
-        )
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Scene):
-            return NotImplemented
-        return (
-            self._lights == other._lights
-            and self._material == other._material
-            and self._ambient_light == other._ambient_light
-            and self._camera_position == other._camera_position
-        )
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __reduce__(self) -> tuple[Any, ...]:
-        return (
-            _rebuilt,
-            (self._lights, self._material, self._ambient_light, self._camera_position),
-        )
-
-
-def _rebuilt(lights: tuple[Light, ...], material: Material, ambient: Any, camera: Any) -> Scene:
-    """A pickled scene, rebuilt."""
-    return Scene(lights, material, ambient_light=ambient, camera_position=camera)
+    def _model_fields(self) -> dict[str, Any]:
+        return {"ambient_light": self._ambient_light, "camera_position": self._camera_position}

@@ -34,9 +34,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import number, one_of, vector
+from ._intake import one_of, vector
 from ._records import ValueRecord, set_field
 from ._typing import Float64Array
+from ._world import WorldScene, record_fields, set_fields
 
 __all__ = [
     "AmbientLight",
@@ -87,7 +88,8 @@ class MeshPhongMaterial(ValueRecord):
     TypeError
         For a non-numeric value.
     ValueError
-        For a wrong shape or a value outside its range.
+        For a colour of another shape than (3,), a negative colour, shininess or intensity, an
+        opacity outside [0, 1] or an unknown side.
     """
 
     color: tuple[float, ...]
@@ -108,12 +110,7 @@ class MeshPhongMaterial(ValueRecord):
         opacity: float = 1.0,
         side: Side = "front",
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "specular", vector(specular, "specular"))
-        set_field(self, "shininess", number(shininess, "shininess"))
-        set_field(self, "emissive", vector(emissive, "emissive"))
-        set_field(self, "emissive_intensity", number(emissive_intensity, "emissive_intensity"))
-        set_field(self, "opacity", number(opacity, "opacity"))
+        set_fields(self, locals())
         set_field(self, "side", one_of(side, "side", ("front", "back", "double")))
         # The native scene checks ranges; checking here too names the value at its source.
         _native_scene([], self, _ZERO, None, True)
@@ -135,8 +132,7 @@ class AmbientLight(ValueRecord):
     intensity: float
 
     def __init__(self, color: ArrayLike = _WHITE, intensity: float = 1.0) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
+        set_fields(self, locals())
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -169,10 +165,7 @@ class HemisphereLight(ValueRecord):
         intensity: float = 1.0,
         position: ArrayLike = _UP,
     ) -> None:
-        set_field(self, "sky_color", vector(sky_color, "sky_color"))
-        set_field(self, "ground_color", vector(ground_color, "ground_color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "position", vector(position, "position"))
+        set_fields(self, locals())
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -203,10 +196,7 @@ class DirectionalLight(ValueRecord):
         position: ArrayLike = _UP,
         target: ArrayLike = _ZERO,
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "position", vector(position, "position"))
-        set_field(self, "target", vector(target, "target"))
+        set_fields(self, locals())
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -242,11 +232,7 @@ class PointLight(ValueRecord):
         decay: float = 2.0,
         position: ArrayLike = _ZERO,
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "distance", number(distance, "distance"))
-        set_field(self, "decay", number(decay, "decay"))
-        set_field(self, "position", vector(position, "position"))
+        set_fields(self, locals())
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -293,14 +279,7 @@ class SpotLight(ValueRecord):
         position: ArrayLike = _UP,
         target: ArrayLike = _ZERO,
     ) -> None:
-        set_field(self, "color", vector(color, "color"))
-        set_field(self, "intensity", number(intensity, "intensity"))
-        set_field(self, "distance", number(distance, "distance"))
-        set_field(self, "angle", number(angle, "angle"))
-        set_field(self, "penumbra", number(penumbra, "penumbra"))
-        set_field(self, "decay", number(decay, "decay"))
-        set_field(self, "position", vector(position, "position"))
-        set_field(self, "target", vector(target, "target"))
+        set_fields(self, locals())
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -345,22 +324,17 @@ def _native_scene(
     view_direction: tuple[float, ...] | None,
     physical: bool,
 ) -> _glshade.ThreejsScene:
+    """The native scene, which checks every value (the material's fields are its keywords)."""
     return _glshade.ThreejsScene(
         lights=[_row(light) for light in lights],
-        color=material.color,
-        specular=material.specular,
-        shininess=material.shininess,
-        emissive=material.emissive,
-        emissive_intensity=material.emissive_intensity,
-        opacity=material.opacity,
-        side=material.side,
         camera_position=camera,
         view_direction=view_direction,
         physically_correct_lights=physical,
+        **record_fields(material),
     )
 
 
-class Scene:
+class Scene(WorldScene[Light, MeshPhongMaterial]):
     """Lights, one ``MeshPhongMaterial``, the camera and the renderer's light convention, in
     world coordinates: what three.js' shader reads for one mesh.
 
@@ -386,12 +360,19 @@ class Scene:
     Raises
     ------
     TypeError
-        For a light or material of another type, or a non-numeric value.
+        For a light or material of another type, a non-numeric value, or a
+        `physically_correct_lights` that is not a bool.
     ValueError
-        For a value outside its range.
+        For a camera position that is not finite, or a view direction that is zero or not
+        finite.
     """
 
-    __slots__ = ("_camera_position", "_lights", "_material", "_native", "_physical", "_view")
+    __slots__ = ("_physical", "_view")
+
+    _native: _glshade.ThreejsScene
+
+    _LIGHTS = _KINDS
+    _MATERIAL = MeshPhongMaterial
 
     def __init__(
         self,
@@ -402,51 +383,24 @@ class Scene:
         view_direction: ArrayLike | None = None,
         physically_correct_lights: bool = True,
     ) -> None:
-        self._lights = tuple(lights)
-        for i, light in enumerate(self._lights):
-            if not isinstance(light, _KINDS):
-                raise TypeError(
-                    f"lights[{i}] must be a glshade.threejs AmbientLight, HemisphereLight, "
-                    f"DirectionalLight, PointLight or SpotLight, got {type(light)!r}"
-                )
-        material = MeshPhongMaterial() if material is None else material
-        if not isinstance(material, MeshPhongMaterial):
-            raise TypeError(
-                f"material must be a glshade.threejs.MeshPhongMaterial, got {type(material)!r}"
-            )
+        self._take(lights, material)
         if not isinstance(physically_correct_lights, (bool, np.bool_)):
             raise TypeError(
                 f"physically_correct_lights must be True or False, got "
                 f"{physically_correct_lights!r}"
             )
-        self._material = material
         self._camera_position = vector(camera_position, "camera_position")
         self._view = None if view_direction is None else vector(view_direction, "view_direction")
         self._physical = bool(physically_correct_lights)
         self._native = _native_scene(
-            list(self._lights), material, self._camera_position, self._view, self._physical
+            list(self._lights), self.material, self._camera_position, self._view, self._physical
         )
 
     @property
     def outputs(self) -> tuple[str, ...]:
         """The names of the colours `shade` returns: ("color",), or ("front", "back") for a
         double-sided material."""
-        return ("front", "back") if self._material.side == "double" else ("color",)
-
-    @property
-    def lights(self) -> tuple[Light, ...]:
-        """The lights, as given."""
-        return self._lights
-
-    @property
-    def material(self) -> MeshPhongMaterial:
-        """The material."""
-        return self._material
-
-    @property
-    def camera_position(self) -> Float64Array:
-        """(3,) Where the camera is."""
-        return np.array(self._camera_position)
+        return ("front", "back") if self.material.side == "double" else ("color",)
 
     @property
     def view_direction(self) -> Float64Array | None:
@@ -458,52 +412,13 @@ class Scene:
         """three.js' ``physicallyCorrectLights``."""
         return self._physical
 
-    def plan(self, dtype: Any = np.float32, *, clamp: bool = True) -> str:
-        """One line saying what `glshade.shade` computes for this scene with arrays of `dtype`:
-        the arithmetic (float64, float32 arrays widened), the instruction set, the lanes per
-        block, and which lights and terms run (a light of zero intensity or colour is skipped;
-        positions are read only for point and spot lights, or a perspective camera's view
-        vector).
-        """
-        name = np.dtype(dtype).name
-        if name not in ("float32", "float64"):
-            raise ValueError(f"dtype must be float32 or float64, got {name}")
-        return str(_glshade.describe_threejs(self._native, model=None, clamp=clamp, dtype=name))
+    def _default_cull(self) -> str | None:
+        # The triangles three.js discards for the material's side (its face culling).
+        return {"front": "back", "back": "front", "double": None}[self.material.side]
 
-    def __repr__(self) -> str:
-        view = "" if self._view is None else f", view_direction={self._view}"
-        return (
-            f"threejs.Scene(lights={list(self._lights)!r}, material={self._material!r}, "
-            f"camera_position={self._camera_position}{view}, "
-            f"physically_correct_lights={self._physical})"
-        )
-
-    def _key(self) -> tuple[Any, ...]:
-        return (self._lights, self._material, self._camera_position, self._view, self._physical)
-
-    def __eq__(self, other: object) -> bool:
-        if not isinstance(other, Scene):
-            return NotImplemented
-        return self._key() == other._key()
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __reduce__(self) -> tuple[Any, ...]:
-        return (_rebuilt, self._key())
-
-
-def _rebuilt(
-    lights: tuple[Light, ...],
-    material: MeshPhongMaterial,
-    camera: Any,
-    view: Any,
-    physical: bool,
-) -> Scene:
-    """A pickled scene, rebuilt."""
-    return Scene(
-        lights,
-        material,
-        camera_position=camera,
-        view_direction=view,
-        physically_correct_lights=physical,
-    )
+    def _model_fields(self) -> dict[str, Any]:
+        return {
+            "camera_position": self._camera_position,
+            "view_direction": self._view,
+            "physically_correct_lights": self._physical,
+        }

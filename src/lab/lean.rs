@@ -11,10 +11,11 @@ use std::mem::MaybeUninit;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::ValidScene;
-use crate::lighting::kernel::{emit, Block, SideColors};
-use crate::lighting::power::{halfway_pow, squared_minus_one, Halfway, Scale};
-use crate::lighting::prepare::{Prepared, ShadeOptions, Source, Viewer};
-use crate::lighting::shade::{run_shader, BlockShader, Inputs};
+use crate::lighting::block::{emit, Block, SideColors};
+use crate::lighting::driver::{run_shader, BlockShader, Inputs};
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::fixed_function::power::{halfway_pow, squared_minus_one, Halfway, Scale};
+use crate::lighting::fixed_function::prepare::{Prepared, Source, Viewer};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::simd::lanes::{Lanes, V3};
@@ -121,7 +122,7 @@ impl<T: Real> BlockShader<T> for Lean<T> {
 }
 
 /// Writes the lean bound of `scene` on `normals` into `out` (n RGBA rows), with the tasks and
-/// instruction set of [`crate::lighting::shade::shade`] and the fast mode's `safeguards` put
+/// instruction set of [`crate::lighting::model::shade`] and the fast mode's `safeguards` put
 /// back. Without `power` the colours err by up to 32 times the rounding of n⊙ĥ near the
 /// highlight (a few 10⁻⁶ for unit normals); with it, as the fast mode's for unit normals.
 ///
@@ -198,8 +199,8 @@ mod tests {
     use crate::gl::light::Light;
     use crate::gl::material::Material;
     use crate::gl::scene::Scene;
-    use crate::lighting::shade::{as_uninit, shade};
-
+    use crate::lighting::model::shade;
+    use crate::memory::uninit::as_uninit;
     #[test]
     fn the_lean_bound_agrees_with_shade_on_the_bench_light() {
         let scene = Scene {

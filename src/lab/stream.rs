@@ -6,8 +6,8 @@ use std::mem::MaybeUninit;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::lighting::kernel::{Block, SideColors};
-use crate::lighting::shade::{run_shader, BlockShader, Inputs};
+use crate::lighting::block::{Block, SideColors};
+use crate::lighting::driver::{run_shader, BlockShader, Inputs};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::simd::lanes::Lanes;
@@ -40,7 +40,7 @@ impl<T: Real> BlockShader<T> for Stream {
 }
 
 /// Writes the streaming floor of `normals` (and `positions` when `read_positions`) into `out`
-/// (n RGBA rows), with the tasks and instruction set of [`crate::lighting::shade::shade`].
+/// (n RGBA rows), with the tasks and instruction set of [`crate::lighting::model::shade`].
 ///
 /// # Errors
 /// A value error for mismatched lengths, a memory error for the task list, or
@@ -75,8 +75,7 @@ pub fn stream<T: Real>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::lighting::shade::as_uninit;
-
+    use crate::memory::uninit::as_uninit;
     #[test]
     fn the_stream_copies_every_value_it_reads() {
         let n = 100;

@@ -5,7 +5,7 @@ use std::mem::MaybeUninit;
 
 use numpy::npyffi::{self, npy_intp, PY_ARRAY_API};
 use numpy::{
-    Element, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArrayDyn,
+    Element, PyArrayDescrMethods, PyArrayDyn, PyArrayMethods, PyReadonlyArray2, PyReadonlyArrayDyn,
     PyReadwriteArrayDyn, PyUntypedArray, PyUntypedArrayMethods,
 };
 use pyo3::exceptions::{PyTypeError, PyValueError};
@@ -295,4 +295,24 @@ fn dims(shape: &[usize]) -> PyResult<Vec<npy_intp>> {
         .map(|&d| npy_intp::try_from(d))
         .collect::<Result<_, _>>()
         .map_err(|_| PyValueError::new_err(format!("array shape {shape:?} is too large")))
+}
+
+/// A row-major (4, 4) array (as numpy prints matrices) as a column-major `DMat4`.
+pub fn matrix(m: &PyReadonlyArray2<'_, f64>, name: &str) -> PyResult<glam::DMat4> {
+    let values: &[f64] = m
+        .as_slice()
+        .ok()
+        .filter(|_| m.is_c_contiguous())
+        .unwrap_or(&[]);
+    let rows: [f64; 16] = values
+        .try_into()
+        .ok()
+        .filter(|_| m.shape() == [4, 4])
+        .ok_or_else(|| {
+            PyValueError::new_err(format!(
+                "{name} must be a C-contiguous (4, 4) array, got shape {}",
+                shape_text(m.shape())
+            ))
+        })?;
+    Ok(glam::DMat4::from_cols_array(&rows).transpose())
 }

@@ -1,20 +1,13 @@
-//! The binding of the metallic-roughness model: its native scene and `shade_gltf`,
-//! `describe_gltf`.
+//! The native scene of the metallic-roughness model (glTF state), built from the rows
+//! `glshade.gltf` passes.
 
-use numpy::{Element, PyReadonlyArray2, PyUntypedArray};
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use super::arrays::{float_named, float_of, Float};
-use super::matrix;
 use super::runtime::to_pyerr;
-use super::shading::shade_arrays;
 use crate::gltf::light::{Light, Punctual};
 use crate::gltf::material::Material;
 use crate::gltf::scene::{Scene, ValidScene};
-use crate::lighting::metallic_roughness::shade::{describe, shade_uninit, Options};
-use crate::lighting::prepare::ColorClamp;
-use crate::numbers::real::Real;
 
 /// One light as `glshade.gltf` passes it: kind ("directional", "point" or "spot"), colour,
 /// intensity, position, direction, inner and outer cone angles.
@@ -86,74 +79,4 @@ impl GltfScene {
             state: scene.validated().map_err(to_pyerr)?,
         })
     }
-}
-
-fn options(model: Option<&PyReadonlyArray2<'_, f64>>, clamp: bool) -> PyResult<Options> {
-    Ok(Options {
-        model: model.map(|m| matrix(m, "model")).transpose()?,
-        clamp: ColorClamp::from(clamp),
-        ..Options::default()
-    })
-}
-
-fn shade_typed<'py, T: Element + Real>(
-    py: Python<'py>,
-    scene: &ValidScene,
-    options: &Options,
-    positions: &Bound<'py, PyUntypedArray>,
-    normals: &Bound<'py, PyUntypedArray>,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
-    out: Option<&Bound<'py, PyUntypedArray>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let lights = scene.lights.len();
-    shade_arrays::<T>(
-        py,
-        positions,
-        normals,
-        colors,
-        out,
-        1,
-        lights,
-        |p, n, c, dst, stop| shade_uninit(scene, p, n, c, options, dst, stop),
-    )
-}
-
-/// Lights the vertices with the metallic-roughness model; see `glshade.shade`, whose intake
-/// prepared the arrays as for the GL model.
-#[pyfunction]
-#[pyo3(signature = (positions, normals, scene, *, colors, model, clamp, out))]
-pub fn shade_gltf<'py>(
-    py: Python<'py>,
-    positions: &Bound<'py, PyUntypedArray>,
-    normals: &Bound<'py, PyUntypedArray>,
-    scene: &Bound<'py, GltfScene>,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
-    model: Option<PyReadonlyArray2<'py, f64>>,
-    clamp: bool,
-    out: Option<&Bound<'py, PyUntypedArray>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let options = options(model.as_ref(), clamp)?;
-    let scene = &scene.get().state;
-    match float_of(positions, "positions")? {
-        Float::F32 => shade_typed::<f32>(py, scene, &options, positions, normals, colors, out),
-        Float::F64 => shade_typed::<f64>(py, scene, &options, positions, normals, colors, out),
-    }
-}
-
-/// One line saying what `shade_gltf` computes for `scene` in `dtype` ("float32" or "float64").
-#[pyfunction]
-#[pyo3(signature = (scene, *, model, clamp, dtype))]
-pub fn describe_gltf(
-    scene: &Bound<'_, GltfScene>,
-    model: Option<PyReadonlyArray2<'_, f64>>,
-    clamp: bool,
-    dtype: &str,
-) -> PyResult<String> {
-    let options = options(model.as_ref(), clamp)?;
-    let scene = &scene.get().state;
-    match float_named(dtype)? {
-        Float::F32 => describe::<f32>(scene, &options),
-        Float::F64 => describe::<f64>(scene, &options),
-    }
-    .map_err(to_pyerr)
 }

@@ -7,32 +7,22 @@ use numpy::{
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 
-use super::arrays::{float_of, read, rows, vertex_colors, zeros, Float};
-use super::gltf::GltfScene;
+use super::arrays::matrix;
+use super::arrays::{float_of, read, rows, shape_text, vertex_colors, zeros, Float};
+use super::faces;
+use super::model::{AnyScene, BindingModel, OnModel};
 use super::runtime::{run, to_pyerr};
-use super::scene::Scene;
-use super::threejs::ThreejsScene;
-use super::{faces, matrix};
 use crate::gl::material::ColorMaterial;
-use crate::lighting::prepare::ColorClamp;
+use crate::lighting::clamp::ColorClamp;
 use crate::numbers::real::Real;
 use crate::render::camera::Camera;
 use crate::render::mesh::{Mesh, Textured};
-use crate::render::passes::Provoking;
+use crate::render::options::{Provoking, RenderOptions, Shading};
 use crate::render::raster::{Cull, Viewport};
 use crate::render::texture::{Filter, Texture, Wrap};
-use crate::render::{render_mesh_phong, render_metallic_roughness, RenderOptions, Shading};
 
-/// The scene of a render: GL's, glTF's metallic-roughness one or three.js'.
-#[derive(FromPyObject)]
-pub enum AnyScene<'py> {
-    /// `glshade.Scene`'s native scene.
-    Gl(Bound<'py, Scene>),
-    /// `glshade.gltf.Scene`'s native scene.
-    Gltf(Bound<'py, GltfScene>),
-    /// `glshade.threejs.Scene`'s native scene.
-    Threejs(Bound<'py, ThreejsScene>),
-}
+/// A render's image and depth, of the vertices' dtype.
+type Rendered<'py> = PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)>;
 
 /// A render's texture as the binding takes it: float32 RGBA texels (height, width, 4), the
 /// texture coordinates (n, 2) of the vertices' dtype, the filter and the wrap modes.
@@ -43,9 +33,9 @@ pub struct TextureArgs<'py> {
     wrap: [Wrap; 2],
 }
 
-fn render_typed<'py, T: Element + Real>(
+fn render_typed<'py, T: Element + Real, M: BindingModel>(
     py: Python<'py>,
-    scene: &AnyScene<'py>,
+    scene: &M,
     camera: &Camera,
     options: &RenderOptions,
     vertices: &Bound<'py, PyUntypedArray>,
@@ -53,7 +43,7 @@ fn render_typed<'py, T: Element + Real>(
     normals: Option<&Bound<'py, PyUntypedArray>>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
     texture: Option<&TextureArgs<'py>>,
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+) -> Rendered<'py> {
     let vertices = read::<T>(vertices, "vertices")?;
     let normals = normals.map(|a| read::<T>(a, "normals")).transpose()?;
     let colors = colors.map(|a| read::<T>(a, "colors")).transpose()?;
@@ -94,38 +84,23 @@ fn render_typed<'py, T: Element + Real>(
     {
         let (mut image, mut depth) = (image.readwrite(), depth.readwrite());
         let (image, depth) = (image.as_slice_mut()?, depth.as_slice_mut()?);
-        match scene {
-            AnyScene::Gl(scene) => {
-                let scene = &scene.get().state;
-                run(py, true, |stop| {
-                    crate::render::render(scene, &mesh, camera, options, image, depth, stop)
-                })?;
-            }
-            AnyScene::Gltf(scene) => {
-                let scene = &scene.get().state;
-                run(py, true, |stop| {
-                    render_metallic_roughness(scene, &mesh, camera, options, image, depth, stop)
-                })?;
-            }
-            AnyScene::Threejs(scene) => {
-                let scene = &scene.get().state;
-                run(py, true, |stop| {
-                    render_mesh_phong(scene, &mesh, camera, options, image, depth, stop)
-                })?;
-            }
-        }
+        run(py, true, |stop| {
+            crate::render::render(scene, &mesh, camera, options, image, depth, stop)
+        })?;
     }
     Ok((image.into_any(), depth.into_any()))
 }
 
-/// Renders a mesh; see `glshade.render`, whose intake prepared the arrays (float32 or float64
-/// of one dtype, int64 faces, float64 matrices). Returns the (height, width, 4) image and the
-/// (height, width) depth, of the vertices' dtype.
+/// Renders a mesh lit by `scene`, a native scene of any model; see `glshade.render`, whose
+/// intake prepared the arrays (float32 or float64 of one dtype, int64 faces, float64 matrices)
+/// and passes GL's options (`color_material` to `rescale_normal`) for a `glshade.Scene` only.
+/// Returns the (height, width, 4) image and the (height, width) depth, of the vertices' dtype.
 #[pyfunction]
 #[pyo3(signature = (
     vertices, faces, scene, *, view, projection, model, width, height, shading, provoking_vertex,
-    normals, colors, color_material, color_material_face, normalize, rescale_normal, cull,
-    background, clamp, texture, uv, texture_filter, texture_wrap
+    normals, colors, cull, background, clamp, texture, uv, texture_filter, texture_wrap,
+    color_material=None, color_material_face="front_and_back", normalize=true,
+    rescale_normal=false
 ))]
 pub fn render<'py>(
     py: Python<'py>,
@@ -141,10 +116,6 @@ pub fn render<'py>(
     provoking_vertex: &str,
     normals: Option<&Bound<'py, PyUntypedArray>>,
     colors: Option<&Bound<'py, PyUntypedArray>>,
-    color_material: Option<&str>,
-    color_material_face: &str,
-    normalize: bool,
-    rescale_normal: bool,
     cull: &str,
     background: PyReadonlyArray1<'py, f64>,
     clamp: bool,
@@ -152,7 +123,11 @@ pub fn render<'py>(
     uv: Option<Bound<'py, PyUntypedArray>>,
     texture_filter: &str,
     texture_wrap: (String, String),
-) -> PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)> {
+    color_material: Option<&str>,
+    color_material_face: &str,
+    normalize: bool,
+    rescale_normal: bool,
+) -> Rendered<'py> {
     let texture = match (texture, uv) {
         (Some(texels), Some(uv)) => Some(TextureArgs {
             texels,
@@ -177,7 +152,7 @@ pub fn render<'py>(
     let background: [f64; 4] = background.as_slice()?.try_into().map_err(|_| {
         PyValueError::new_err(format!(
             "background must have 4 values, got shape {}",
-            super::arrays::shape_text(background.shape())
+            shape_text(background.shape())
         ))
     })?;
     let options = RenderOptions {
@@ -195,29 +170,53 @@ pub fn render<'py>(
             .map_err(to_pyerr)?,
         clamp: ColorClamp::from(clamp),
     };
-    let scene = &scene;
-    match float_of(vertices, "vertices")? {
-        Float::F32 => render_typed::<f32>(
-            py,
+    scene.with(RenderWork {
+        py,
+        camera: &camera,
+        options: &options,
+        vertices,
+        faces,
+        normals,
+        colors,
+        texture: texture.as_ref(),
+    })
+}
+
+/// The work of one `render` call, done with whichever model the scene is.
+struct RenderWork<'a, 'py> {
+    py: Python<'py>,
+    camera: &'a Camera,
+    options: &'a RenderOptions,
+    vertices: &'a Bound<'py, PyUntypedArray>,
+    faces: &'a Bound<'py, PyUntypedArray>,
+    normals: Option<&'a Bound<'py, PyUntypedArray>>,
+    colors: Option<&'a Bound<'py, PyUntypedArray>>,
+    texture: Option<&'a TextureArgs<'py>>,
+}
+
+impl<'py> RenderWork<'_, 'py> {
+    /// The render on vertices of `T` with `scene`'s model.
+    fn typed<T: Element + Real, M: BindingModel>(self, scene: &M) -> Rendered<'py> {
+        render_typed::<T, M>(
+            self.py,
             scene,
-            &camera,
-            &options,
-            vertices,
-            faces,
-            normals,
-            colors,
-            texture.as_ref(),
-        ),
-        Float::F64 => render_typed::<f64>(
-            py,
-            scene,
-            &camera,
-            &options,
-            vertices,
-            faces,
-            normals,
-            colors,
-            texture.as_ref(),
-        ),
+            self.camera,
+            self.options,
+            self.vertices,
+            self.faces,
+            self.normals,
+            self.colors,
+            self.texture,
+        )
+    }
+}
+
+impl<'py> OnModel for RenderWork<'_, 'py> {
+    type Output = Rendered<'py>;
+    fn call<M: BindingModel>(self, scene: &M) -> Self::Output {
+        match float_of(self.vertices, "vertices")? {
+            Float::F32 => self.typed::<f32, M>(scene),
+            Float::F64 => self.typed::<f64, M>(scene),
+        }
     }
 }

@@ -1,21 +1,18 @@
-//! The binding of `shade` and `describe`.
+//! The binding of `shade` and `describe`, for every model, and of the streaming floor.
+
+use std::mem::MaybeUninit;
 
 use numpy::{Element, PyReadonlyArray2, PyUntypedArray, PyUntypedArrayMethods};
 use pyo3::prelude::*;
 
-use std::mem::MaybeUninit;
-
 use super::arrays::{filled, float_named, float_of, read, rows, vertex_colors, write, Float};
-use super::matrix;
+use super::model::{AnyScene, BindingModel, OnModel, Settings};
 use super::runtime::{run, to_pyerr};
-use super::scene::Scene;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::gl::material::ColorMaterial;
 use crate::gl::vertex_colors::VertexColors;
-use crate::lab::lean::Safeguards;
-use crate::lighting::prepare::{Accuracy, ColorClamp, ShadeOptions};
-use crate::lighting::shade::as_uninit;
+use crate::lighting::model::{describe as describe_model, shade_uninit};
+use crate::memory::uninit::as_uninit;
 use crate::numbers::real::Real;
 
 /// Vertex-light products above which a call answers Ctrl-C while it runs (about a millisecond
@@ -25,7 +22,7 @@ const LONG_CALL: usize = 1 << 17;
 /// Computes one call's colours with `compute` (its arrays, the memory to fill, the stop) into
 /// `out` or a new array of shape ([planes,] ..., 4); `lights` sizes the work for Ctrl-C.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn shade_arrays<'py, T: Element + Real>(
+fn shade_arrays<'py, T: Element + Real>(
     py: Python<'py>,
     positions: &Bound<'py, PyUntypedArray>,
     normals: &Bound<'py, PyUntypedArray>,
@@ -78,135 +75,141 @@ pub(crate) fn shade_arrays<'py, T: Element + Real>(
     Ok(array.into_any())
 }
 
-fn shade_typed<'py, T: Element + Real>(
+/// The work of one `shade` call, done with whichever model the scene is.
+struct ShadeWork<'a, 'py> {
     py: Python<'py>,
-    scene: &Scene,
-    options: &ShadeOptions,
-    positions: &Bound<'py, PyUntypedArray>,
-    normals: &Bound<'py, PyUntypedArray>,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
-    out: Option<&Bound<'py, PyUntypedArray>>,
-) -> PyResult<Bound<'py, PyAny>> {
-    let scene = &scene.state;
-    let (planes, lights) = (scene.output_count(), scene.lights.len());
-    shade_arrays::<T>(
-        py,
-        positions,
-        normals,
-        colors,
-        out,
-        planes,
-        lights,
-        |p, n, c, dst, stop| {
-            crate::lighting::shade::shade_uninit(scene, p, n, c, options, dst, stop)
-        },
-    )
+    settings: &'a Settings<'py>,
+    positions: &'a Bound<'py, PyUntypedArray>,
+    normals: &'a Bound<'py, PyUntypedArray>,
+    colors: Option<&'a Bound<'py, PyUntypedArray>>,
+    out: Option<&'a Bound<'py, PyUntypedArray>>,
 }
 
-/// The options of a `shade` call from the binding's arguments.
-fn options_from(
-    modelview: Option<&PyReadonlyArray2<'_, f64>>,
-    normalize: bool,
-    rescale_normal: bool,
-    color_material: Option<&str>,
-    color_material_face: &str,
-    accuracy: &str,
-    strict: bool,
-    clamp: bool,
-) -> PyResult<ShadeOptions> {
-    let modelview = modelview.map(|m| matrix(m, "modelview")).transpose()?;
-    let color_material = color_material
-        .map(|mode| ColorMaterial::parse(mode, color_material_face))
-        .transpose()
-        .map_err(to_pyerr)?;
-    Ok(ShadeOptions {
-        modelview,
-        normalize,
-        rescale_normal,
-        color_material,
-        accuracy: Accuracy::parse(accuracy).map_err(to_pyerr)?,
-        strict,
-        clamp: ColorClamp::from(clamp),
-    })
+impl<'py> ShadeWork<'_, 'py> {
+    /// The call on arrays of `T` with `scene`'s model.
+    fn typed<T: Element + Real, M: BindingModel>(self, scene: &M) -> PyResult<Bound<'py, PyAny>> {
+        let options = M::options(self.settings)?;
+        shade_arrays::<T>(
+            self.py,
+            self.positions,
+            self.normals,
+            self.colors,
+            self.out,
+            scene.outputs(),
+            scene.light_count(),
+            |p, n, c, dst, stop| shade_uninit(scene, p, n, c, &options, dst, stop),
+        )
+    }
 }
 
-/// Lights the vertices of `scene`; see `glshade.shade`, whose intake prepared the arrays
-/// (float32 or float64 of one dtype, C-contiguous, positions and normals of one shape
-/// (..., 3), colours (..., 3|4), `out` checked against the inputs). The options are keywords, so
-/// no positional order ties the Python call to this signature.
+impl<'py> OnModel for ShadeWork<'_, 'py> {
+    type Output = PyResult<Bound<'py, PyAny>>;
+    fn call<M: BindingModel>(self, scene: &M) -> Self::Output {
+        match float_of(self.positions, "positions")? {
+            Float::F32 => self.typed::<f32, M>(scene),
+            Float::F64 => self.typed::<f64, M>(scene),
+        }
+    }
+}
+
+/// Lights the vertices of `scene`, a native scene of any model; see `glshade.shade`, whose
+/// intake prepared the arrays (float32 or float64 of one dtype, C-contiguous, positions and
+/// normals of one shape (..., 3), colours (..., 3|4), `out` checked against the inputs) and
+/// passes GL's options (`modelview` to `strict`) for a `glshade.Scene` only. The options are
+/// keywords, so no positional order ties the Python call to this signature.
 #[pyfunction]
 #[pyo3(signature = (
-    positions, normals, scene, *, modelview, normalize, rescale_normal, colors, color_material,
-    color_material_face, accuracy, strict, clamp, out
+    positions, normals, scene, *, colors, accuracy, clamp, out, modelview=None, normalize=false,
+    rescale_normal=false, color_material=None, color_material_face="front_and_back",
+    strict=false
 ))]
 pub fn shade<'py>(
     py: Python<'py>,
     positions: &Bound<'py, PyUntypedArray>,
     normals: &Bound<'py, PyUntypedArray>,
-    scene: &Bound<'py, Scene>,
+    scene: AnyScene<'py>,
+    colors: Option<&Bound<'py, PyUntypedArray>>,
+    accuracy: &'py str,
+    clamp: bool,
+    out: Option<&Bound<'py, PyUntypedArray>>,
     modelview: Option<PyReadonlyArray2<'py, f64>>,
     normalize: bool,
     rescale_normal: bool,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
-    color_material: Option<&str>,
-    color_material_face: &str,
-    accuracy: &str,
+    color_material: Option<&'py str>,
+    color_material_face: &'py str,
     strict: bool,
-    clamp: bool,
-    out: Option<&Bound<'py, PyUntypedArray>>,
 ) -> PyResult<Bound<'py, PyAny>> {
-    let options = options_from(
-        modelview.as_ref(),
+    let settings = Settings {
+        accuracy,
+        clamp,
+        modelview,
         normalize,
         rescale_normal,
         color_material,
         color_material_face,
-        accuracy,
         strict,
-        clamp,
-    )?;
-    let scene = scene.get();
-    match float_of(positions, "positions")? {
-        Float::F32 => shade_typed::<f32>(py, scene, &options, positions, normals, colors, out),
-        Float::F64 => shade_typed::<f64>(py, scene, &options, positions, normals, colors, out),
+    };
+    scene.with(ShadeWork {
+        py,
+        settings: &settings,
+        positions,
+        normals,
+        colors,
+        out,
+    })
+}
+
+/// The description of one `describe` call, made with whichever model the scene is.
+struct DescribeWork<'a, 'py> {
+    settings: &'a Settings<'py>,
+    dtype: Float,
+}
+
+impl OnModel for DescribeWork<'_, '_> {
+    type Output = PyResult<String>;
+    fn call<M: BindingModel>(self, scene: &M) -> Self::Output {
+        let options = M::options(self.settings)?;
+        match self.dtype {
+            Float::F32 => describe_model::<f32, M>(scene, &options),
+            Float::F64 => describe_model::<f64, M>(scene, &options),
+        }
+        .map_err(to_pyerr)
     }
 }
 
-/// One line saying what `shade` computes for `scene` with these options in `dtype`
-/// ("float32" or "float64"); see `glshade.Scene.plan`.
+/// One line saying what `shade` computes for `scene` (a native scene of any model) with these
+/// options on arrays of `dtype` ("float32" or "float64"); see `Scene.plan`.
 #[pyfunction]
 #[pyo3(signature = (
-    scene, *, modelview, normalize, rescale_normal, color_material, color_material_face, accuracy,
-    strict, clamp, dtype
+    scene, *, dtype, accuracy, clamp, modelview=None, normalize=false, rescale_normal=false,
+    color_material=None, color_material_face="front_and_back", strict=false
 ))]
-pub fn describe(
-    scene: &Bound<'_, Scene>,
-    modelview: Option<PyReadonlyArray2<'_, f64>>,
+pub fn describe<'py>(
+    scene: AnyScene<'py>,
+    dtype: &str,
+    accuracy: &'py str,
+    clamp: bool,
+    modelview: Option<PyReadonlyArray2<'py, f64>>,
     normalize: bool,
     rescale_normal: bool,
-    color_material: Option<&str>,
-    color_material_face: &str,
-    accuracy: &str,
+    color_material: Option<&'py str>,
+    color_material_face: &'py str,
     strict: bool,
-    clamp: bool,
-    dtype: &str,
 ) -> PyResult<String> {
-    let options = options_from(
-        modelview.as_ref(),
+    let settings = Settings {
+        accuracy,
+        clamp,
+        modelview,
         normalize,
         rescale_normal,
         color_material,
         color_material_face,
-        accuracy,
         strict,
-        clamp,
-    )?;
-    let scene = &scene.get().state;
-    match float_named(dtype)? {
-        Float::F32 => crate::lighting::shade::describe::<f32>(scene, &options),
-        Float::F64 => crate::lighting::shade::describe::<f64>(scene, &options),
-    }
-    .map_err(to_pyerr)
+    };
+    scene.with(DescribeWork {
+        settings: &settings,
+        dtype: float_named(dtype)?,
+    })
 }
 
 fn stream_typed<'py, T: Element + Real>(
@@ -242,47 +245,5 @@ pub fn stream<'py>(
     match float_of(normals, "normals")? {
         Float::F32 => stream_typed::<f32>(py, positions, normals, read_positions),
         Float::F64 => stream_typed::<f64>(py, positions, normals, read_positions),
-    }
-}
-
-fn lean_directional_typed<'py, T: Element + Real>(
-    py: Python<'py>,
-    scene: &Bound<'py, Scene>,
-    normals: &Bound<'py, PyUntypedArray>,
-    safeguards: Safeguards,
-) -> PyResult<Bound<'py, PyAny>> {
-    let scene = &scene.get().state;
-    let normals = read::<T>(normals, "normals")?;
-    let n = rows::<T, 3>(&normals, "normals")?;
-    let array = filled::<T>(py, &[n.len(), 4], |dst| {
-        run(py, false, |stop| {
-            crate::lab::lean::lean_directional(scene, n, safeguards, dst, stop)
-        })
-    })?;
-    Ok(array.into_any())
-}
-
-/// The lean bound of one directional light (for `examples/lean_directional.py`): a new (n, 4)
-/// array, `scene`'s one directional light (infinite viewer, Blinn, shininess 32) on
-/// C-contiguous (n, 3) float32 or float64 `normals` with none of the fast mode's safeguards
-/// but those named (`nan`, `power`, `saturate`), through `shade`'s tasks, reads and stores.
-#[pyfunction]
-#[pyo3(signature = (scene, normals, *, nan=false, power=false, saturate=false))]
-pub fn lean_directional<'py>(
-    py: Python<'py>,
-    scene: &Bound<'py, Scene>,
-    normals: &Bound<'py, PyUntypedArray>,
-    nan: bool,
-    power: bool,
-    saturate: bool,
-) -> PyResult<Bound<'py, PyAny>> {
-    let safeguards = Safeguards {
-        nan,
-        power,
-        saturate,
-    };
-    match float_of(normals, "normals")? {
-        Float::F32 => lean_directional_typed::<f32>(py, scene, normals, safeguards),
-        Float::F64 => lean_directional_typed::<f64>(py, scene, normals, safeguards),
     }
 }

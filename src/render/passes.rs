@@ -1,5 +1,4 @@
-//! Lighting the visible pixels, through the render's [`Shader`] (GL's equation or the
-//! metallic-roughness model):
+//! Lighting the visible pixels, through the render's [`Shader`] (the model of its scene):
 //!
 //! - **Gouraud**: the vertices are lit, and the colours interpolated (GL's smooth shading).
 //! - **Phong**: positions, normals (and colours) are interpolated to every visible pixel centre,
@@ -18,64 +17,21 @@ use rayon::prelude::*;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::shade::as_uninit;
 use crate::memory::alloc::{count, try_collect, try_par_collect};
 use crate::memory::pages::Zeroed;
+use crate::memory::uninit::as_uninit;
 use crate::normals::adjacency::index;
 use crate::normals::face_normals;
 use crate::numbers::real::Real;
 use crate::render::mesh::Mesh;
+use crate::render::options::Provoking;
 use crate::render::raster::{Triangle, Viewport};
-use crate::render::shader::Shader;
+use crate::render::shader::{RenderModel, Shader};
 use crate::render::texture::srgb_to_linear;
 use crate::render::visibility::{window_row, Triangles, NO_TRIANGLE};
 
 /// Faces per parallel task of the flat pass's gather of the provoking colours.
 const FACES_PER_TASK: usize = 4096;
-
-/// Where flat shading lights a face: the vertex whose colour GL's flat shading takes
-/// (`glProvokingVertex`), or the face's centroid.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Provoking {
-    /// The last vertex (`GL_LAST_VERTEX_CONVENTION`, GL's default).
-    #[default]
-    Last,
-    /// The first vertex (`GL_FIRST_VERTEX_CONVENTION`: Direct3D's, Vulkan's and Metal's).
-    First,
-    /// The mean of the three positions (where PyTorch3D's `flat_shading` and glshade's
-    /// `shade_mesh(per="face")` light a face) and of the three vertex colours.
-    Centroid,
-}
-
-impl Provoking {
-    /// Parses `"last"`, `"first"` or `"centroid"`.
-    ///
-    /// # Errors
-    /// A value error naming `provoking_vertex` for any other string.
-    pub fn parse(name: &str) -> Result<Self, Error> {
-        match name {
-            "last" => Ok(Self::Last),
-            "first" => Ok(Self::First),
-            "centroid" => Ok(Self::Centroid),
-            _ => Err(Error::value(format!(
-                "provoking_vertex must be 'last', 'first' or 'centroid', got '{name}'"
-            ))),
-        }
-    }
-
-    /// The face's value of a per-vertex quantity `at(vertex)`: one vertex's, or the mean of
-    /// the three (in f64, then rounded once).
-    fn of<T: Real>(self, face: &[i64; 3], at: impl Fn(usize) -> T) -> T {
-        match self {
-            Self::Last => at(index(face[2])),
-            Self::First => at(index(face[0])),
-            Self::Centroid => {
-                let sum: f64 = face.iter().map(|&i| at(index(i)).to_f64()).sum();
-                T::from_f64(sum / 3.0)
-            }
-        }
-    }
-}
 
 /// Σ weights[j] · rows[face[j]]: an attribute of the face's corners at a pixel.
 #[inline]
@@ -201,9 +157,9 @@ impl<'a> Frame<'a> {
 }
 
 /// One lighting pass over a frame: what every mode reads.
-pub struct Pass<'a, T> {
+pub struct Pass<'a, T, M: RenderModel> {
     /// The lighting model and its options.
-    pub shader: Shader<'a>,
+    pub shader: Shader<'a, M>,
     /// The mesh.
     pub mesh: &'a Mesh<'a, T>,
     /// The visible pixels.
@@ -212,12 +168,12 @@ pub struct Pass<'a, T> {
     pub background: [f64; 4],
 }
 
-impl<T: Real> Pass<'_, T> {
+impl<T: Real, M: RenderModel> Pass<'_, T, M> {
     /// The texel that multiplies the fragment of `face` at `weights` (GL's model with a
     /// texture; `None` otherwise).
     #[inline]
     fn modulation(&self, face: [i64; 3], weights: DVec3) -> Option<[f64; 4]> {
-        let textured = self.mesh.textured.filter(|_| self.shader.modulates())?;
+        let textured = self.mesh.textured.filter(|_| M::MODULATES)?;
         Some(
             textured
                 .texture
@@ -231,7 +187,7 @@ impl<T: Real> Pass<'_, T> {
     /// # Errors
     /// A memory error for the texels, or [`Error::interrupted`].
     fn vertex_colors(&self, stop: &Stop) -> Result<Option<Zeroed<T>>, Error> {
-        let Some(textured) = self.mesh.textured.filter(|_| !self.shader.modulates()) else {
+        let Some(textured) = self.mesh.textured.filter(|_| !M::MODULATES) else {
             return Ok(None);
         };
         let len = count(&[textured.uv.len(), 4], "the texels at the vertices")?;
@@ -372,7 +328,7 @@ impl<T: Real> Pass<'_, T> {
         let (mesh, frame) = (self.mesh, &self.frame);
         let total: usize = frame.counts.iter().sum();
         // The metallic-roughness model reads a texture's texels where it is evaluated.
-        let base_texture = mesh.textured.filter(|_| !self.shader.modulates());
+        let base_texture = mesh.textured.filter(|_| !M::MODULATES);
         let color_width = if base_texture.is_some() {
             4
         } else {

@@ -11,9 +11,10 @@
 //! `unsafe` appears here and in `lanes::x86` and `lanes::sse2_fma` (calling a
 //! `#[target_feature]` function is sound only on a CPU with those features, which
 //! [`Isa::supported`] has checked), and in functions that hand memory to be written, not read,
-//! to `shade` (`lighting::shade::as_uninit`, and the binding's two new numpy arrays).
+//! to `shade` (`memory::uninit::as_uninit`, and the binding's two new numpy arrays).
 #![allow(unsafe_code)]
 
+#[cfg(not(feature = "single-kernel"))]
 use std::sync::OnceLock;
 
 use crate::simd::lanes::InstructionSet;
@@ -24,9 +25,10 @@ use crate::simd::lanes::{Avx2, Avx512, Sse2};
 
 /// The baseline set of the target.
 #[cfg(target_arch = "x86_64")]
-type Baseline = Sse2;
+pub type Baseline = Sse2;
+/// The baseline set of the target.
 #[cfg(not(target_arch = "x86_64"))]
-type Baseline = Portable;
+pub type Baseline = Portable;
 
 /// A work item that runs with the register types of an instruction set; `run` must be
 /// `#[inline(always)]` so that its whole body is compiled with the caller's target features.
@@ -37,6 +39,7 @@ pub trait LaneWork {
 
 /// An instruction-set level of x86-64 (or the baseline of any other target).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[cfg_attr(feature = "single-kernel", allow(dead_code))] // one level is compiled
 pub enum Isa {
     /// The target's baseline (SSE2 on x86-64).
     Baseline,
@@ -48,6 +51,7 @@ pub enum Isa {
 
 impl Isa {
     /// Every level, lowest first.
+    #[cfg_attr(feature = "single-kernel", allow(dead_code))] // one level is compiled
     pub const ALL: [Isa; 3] = [Isa::Baseline, Isa::Avx2, Isa::Avx512];
 
     /// The name used in `GLSHADE_ISA` and in plans: `"baseline"`, `"avx2"` or `"avx512"`.
@@ -59,8 +63,13 @@ impl Isa {
         }
     }
 
-    /// True when this CPU can run the level.
+    /// True when this CPU can run the level (with the `single-kernel` feature, only the level
+    /// the kernels were compiled for).
     pub fn supported(self) -> bool {
+        #[cfg(feature = "single-kernel")]
+        if self != single::ISA {
+            return false;
+        }
         match self {
             Isa::Baseline => true,
             #[cfg(target_arch = "x86_64")]
@@ -73,20 +82,28 @@ impl Isa {
     }
 
     /// The best level this CPU supports, capped by the environment variable `GLSHADE_ISA`
-    /// (`baseline`, `avx2` or `avx512`) when it is set; detected once per process.
+    /// (`baseline`, `avx2` or `avx512`) when it is set; detected once per process. With the
+    /// `single-kernel` feature, the level compiled for, whatever `GLSHADE_ISA` says.
     pub fn detect() -> Isa {
-        static CHOSEN: OnceLock<Isa> = OnceLock::new();
-        *CHOSEN.get_or_init(|| {
-            let cap = std::env::var("GLSHADE_ISA")
-                .ok()
-                .and_then(|name| Isa::ALL.into_iter().find(|isa| isa.name() == name))
-                .unwrap_or(Isa::Avx512);
-            Isa::ALL
-                .into_iter()
-                .rev()
-                .find(|isa| *isa <= cap && isa.supported())
-                .unwrap_or(Isa::Baseline)
-        })
+        #[cfg(feature = "single-kernel")]
+        {
+            single::ISA
+        }
+        #[cfg(not(feature = "single-kernel"))]
+        {
+            static CHOSEN: OnceLock<Isa> = OnceLock::new();
+            *CHOSEN.get_or_init(|| {
+                let cap = std::env::var("GLSHADE_ISA")
+                    .ok()
+                    .and_then(|name| Isa::ALL.into_iter().find(|isa| isa.name() == name))
+                    .unwrap_or(Isa::Avx512);
+                Isa::ALL
+                    .into_iter()
+                    .rev()
+                    .find(|isa| *isa <= cap && isa.supported())
+                    .unwrap_or(Isa::Baseline)
+            })
+        }
     }
 
     /// Runs `work` with the registers of this level.
@@ -95,6 +112,12 @@ impl Isa {
     /// If the CPU does not support the level (callers pass [`Isa::detect`] or a level whose
     /// [`Isa::supported`] they checked).
     pub fn run<W: LaneWork>(self, work: W) {
+        #[cfg(feature = "single-kernel")]
+        {
+            assert_eq!(self, single::ISA, "a single-kernel build runs one level");
+            work.run::<single::Set>();
+        }
+        #[cfg(not(feature = "single-kernel"))]
         if self == Isa::Baseline {
             work.run::<Baseline>();
         } else {
@@ -118,6 +141,43 @@ impl Isa {
             _ => panic!("run_wide needs AVX2 or AVX-512, got {}", self.name()),
         }
     }
+}
+
+/// With the `single-kernel` feature (the inner loop of kernel work), the one level the kernels
+/// are compiled for: the best of the features the whole crate is compiled with, so this
+/// machine's best with `RUSTFLAGS="-C target-cpu=native"`, else the baseline. Those features
+/// are on everywhere, so the work runs as it is, without a `#[target_feature]` function.
+#[cfg(feature = "single-kernel")]
+mod single {
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "avx512f",
+        target_feature = "avx512bw",
+        target_feature = "avx512dq",
+        target_feature = "avx512vl",
+        target_feature = "fma"
+    ))]
+    pub use {super::Avx512 as Set, super::Isa::Avx512 as ISA};
+
+    #[cfg(all(
+        target_arch = "x86_64",
+        target_feature = "avx2",
+        target_feature = "fma",
+        not(all(
+            target_feature = "avx512f",
+            target_feature = "avx512bw",
+            target_feature = "avx512dq",
+            target_feature = "avx512vl"
+        ))
+    ))]
+    pub use {super::Avx2 as Set, super::Isa::Avx2 as ISA};
+
+    #[cfg(not(all(
+        target_arch = "x86_64",
+        target_feature = "avx2",
+        target_feature = "fma"
+    )))]
+    pub use {super::Baseline as Set, super::Isa::Baseline as ISA};
 }
 
 /// Defines, from one list of target features, the function that runs a [`LaneWork`] compiled

@@ -8,9 +8,12 @@ use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::material::Material;
 use crate::gl::scene::{Scene, Specular};
-use crate::lighting::plan::Plan;
-use crate::lighting::prepare::{Prepared, ShadeOptions};
-use crate::lighting::shade::{as_uninit, run};
+use crate::lighting::driver::Inputs;
+use crate::lighting::fixed_function::model::run;
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::fixed_function::plan::Plan;
+use crate::lighting::fixed_function::prepare::Prepared;
+use crate::memory::uninit::as_uninit;
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::tests::support::Numbers;
@@ -125,9 +128,11 @@ fn check<T: Real>(modelviews: &[Option<DMat4>]) {
                                 &prepared,
                                 &plan,
                                 isa,
-                                &positions,
-                                &normals,
-                                None,
+                                Inputs {
+                                    positions: &positions,
+                                    normals: &normals,
+                                    colors: None,
+                                },
                                 as_uninit(&mut out),
                                 &Stop::new(),
                             )
@@ -202,9 +207,11 @@ fn shade_all<T: Real>(scene: &Scene, normals: &[[T; 3]], options: &ShadeOptions)
             &prepared,
             &plan,
             isa,
-            &positions,
-            normals,
-            None,
+            Inputs {
+                positions: &positions,
+                normals,
+                colors: None,
+            },
             as_uninit(&mut out),
             &Stop::new(),
         )

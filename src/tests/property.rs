@@ -8,9 +8,8 @@ use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::material::Material;
 use crate::gl::scene::{Scene, Specular};
-use crate::lighting::prepare::ShadeOptions;
-use crate::lighting::shade::shade;
-
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::model::shade;
 fn colour() -> impl Strategy<Value = [f64; 4]> {
     (-1.0..2.0, -1.0..2.0, -1.0..2.0).prop_map(|(r, g, b)| [r, g, b, 1.0])
 }

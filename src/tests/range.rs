@@ -7,8 +7,8 @@ use glam::{DMat4, DQuat, DVec3};
 use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::scene::Scene;
-use crate::lighting::prepare::ShadeOptions;
-use crate::lighting::shade::shade;
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::model::shade;
 use crate::numbers::real::Real;
 
 /// The colours `shade` computes for one vertex.
@@ -328,7 +328,7 @@ fn draw<T: Real>(
     vertices: &[[T; 3]],
     scene: &Scene,
     camera: &crate::render::camera::Camera,
-    shading: crate::render::Shading,
+    shading: crate::render::options::Shading,
     (width, height): (usize, usize),
 ) -> (Vec<f64>, Vec<f64>) {
     let faces: Vec<[i64; 3]> = (0..i64::try_from(vertices.len() / 3).unwrap())
@@ -341,10 +341,10 @@ fn draw<T: Real>(
         colors: None,
         textured: None,
     };
-    let options = crate::render::RenderOptions {
+    let options = crate::render::options::RenderOptions {
         viewport: crate::render::raster::Viewport { width, height },
         shading,
-        ..crate::render::RenderOptions::default()
+        ..crate::render::options::RenderOptions::default()
     };
     let mut image = vec![T::ZERO; width * height * 4];
     let mut depth = vec![T::ZERO; width * height];
@@ -372,7 +372,7 @@ fn scaled<T: Real>(corners: &[[f64; 3]], scale: f64) -> Vec<[T; 3]> {
 }
 
 fn huge_triangles_rasterise_as_small_ones<T: Real>(ks: std::ops::RangeInclusive<i32>, tol: f64) {
-    use crate::render::Shading;
+    use crate::render::options::Shading;
     let size = (17, 13);
     let ortho = crate::render::camera::Camera::default();
     // Enclosing the view; and with edges y = x/2 and x = 0.3·y... through it (lines through
@@ -449,7 +449,7 @@ fn huge_triangles_rasterise_as_small_ones_f32() {
 }
 
 fn huge_triangles_under_point_lights_stay_finite<T: Real>(ks: &[i32]) {
-    use crate::render::Shading;
+    use crate::render::options::Shading;
     let mut scene = spot_scene();
     scene.lights[0].quadratic_attenuation = 1.0;
     let enclosing = [[-3.0, -3.0, 0.0], [3.0, -3.0, 0.0], [0.0, 3.0, 0.0]];

@@ -1,4 +1,4 @@
-//! The kernels compiled for a shape of scene ([`crate::lighting::shape`]) against the general
+//! The kernels compiled for a shape of scene ([`crate::lighting::fixed_function::shape`]) against the general
 //! kernel, bit for bit, on scenes of each shape, the instruction sets they are compiled for (AVX2,
 //! AVX-512) and both types; the baseline choosing the general kernel; and [`fits`]
 //! refusing every feature a shape fixes otherwise; and which plans are grey.
@@ -9,13 +9,16 @@ use crate::errors::stop::Stop;
 use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
-use crate::lighting::kernel::Kernel;
-use crate::lighting::plan::Plan;
-use crate::lighting::prepare::{Prepared, ShadeOptions};
-use crate::lighting::shade::{as_uninit, describe, run_shader, Inputs};
-use crate::lighting::shape::{
+use crate::lighting::driver::{run_shader, Inputs};
+use crate::lighting::fixed_function::kernel::Kernel;
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::fixed_function::plan::Plan;
+use crate::lighting::fixed_function::prepare::Prepared;
+use crate::lighting::fixed_function::shape::{
     fits, on_shape, Directional, General, Known, Mixed, OnShape, Point, Shape,
 };
+use crate::lighting::model::describe;
+use crate::memory::uninit::as_uninit;
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::tests::support::vertices;
@@ -386,9 +389,9 @@ fn the_plan_line_names_grey_sums_only_where_a_kernel_sums_one_channel() {
         };
         let (scene, options) = (scene.validated().unwrap(), ShadeOptions::default());
         if wide {
-            describe::<f64>(&scene, &options).unwrap()
+            describe::<f64, _>(&scene, &options).unwrap()
         } else {
-            describe::<f32>(&scene, &options).unwrap()
+            describe::<f32, _>(&scene, &options).unwrap()
         }
     };
     let named = "grey lights: one channel summed";

@@ -13,9 +13,12 @@ use crate::gl::light::Light;
 use crate::gl::material::{ColorMaterial, ColorMaterialMode, Face, Material};
 use crate::gl::scene::{Scene, Specular};
 use crate::gl::vertex_colors::VertexColors;
-use crate::lighting::plan::{LightPlan, Plan};
-use crate::lighting::prepare::{Prepared, ShadeOptions};
-use crate::lighting::shade::{as_uninit, run};
+use crate::lighting::driver::Inputs;
+use crate::lighting::fixed_function::model::run;
+use crate::lighting::fixed_function::options::ShadeOptions;
+use crate::lighting::fixed_function::plan::{LightPlan, Plan};
+use crate::lighting::fixed_function::prepare::Prepared;
+use crate::memory::uninit::as_uninit;
 use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::tests::support::vertices;
@@ -158,9 +161,11 @@ fn shade_bits<T: Real>(bits: u32, general: bool, isa: Isa) -> Vec<u64> {
         &prepared,
         &plan,
         isa,
-        &positions,
-        &normals,
-        colors,
+        Inputs {
+            positions: &positions,
+            normals: &normals,
+            colors,
+        },
         as_uninit(&mut out),
         &Stop::new(),
     )

@@ -5,7 +5,7 @@ arguments and results. moderngl is an optional dependency, imported on first use
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Any, Literal, cast, overload
+from typing import TYPE_CHECKING, Any, Literal, cast, overload
 
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
@@ -24,11 +24,18 @@ from .._intake import (
     warn_if_bytes,
 )
 from .._records import ValueRecord
+from .._render import render as gs_render
 from .._render_input import render_input
+from .._render_options import shared_defaults
 from .._scene import Scene
-from .._transfer import Transfer, apply_transfer, transfer_name
-from .._typing import Cull, Face, Shading, Space
+from .._transfer import apply_transfer, transfer_name
+from .._typing import Cull, Face, Shading
 from ._shaders import Shaders, compute_shader, raster_shaders
+
+if TYPE_CHECKING:
+    from typing_extensions import Unpack
+
+    from .._render_options import SharedRenderOptions
 
 _contexts: list[Any] = []
 _programs: dict[tuple[int, str], Any] = {}
@@ -340,22 +347,9 @@ def render(
     scene: Any = ...,
     camera: Any = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    normals: ArrayLike | None = ...,
-    colors: Any = ...,
-    color_material: str | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer = ...,
     depth: Literal[False] = ...,
     context: Any = ...,
+    **options: Unpack[SharedRenderOptions],
 ) -> Image: ...
 @overload
 def render(
@@ -364,22 +358,9 @@ def render(
     scene: Any = ...,
     camera: Any = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    normals: ArrayLike | None = ...,
-    colors: Any = ...,
-    color_material: str | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer = ...,
     depth: Literal[True],
     context: Any = ...,
+    **options: Unpack[SharedRenderOptions],
 ) -> tuple[Image, NDArray[np.float32]]: ...
 @overload
 def render(
@@ -388,22 +369,9 @@ def render(
     scene: Any = ...,
     camera: Any = ...,
     *,
-    width: int = ...,
-    height: int = ...,
-    shading: Shading = ...,
-    normals: ArrayLike | None = ...,
-    colors: Any = ...,
-    color_material: str | None = ...,
-    color_material_face: Face = ...,
-    model: ArrayLike | None = ...,
-    normalize: bool = ...,
-    rescale_normal: bool = ...,
-    cull: Cull | None = ...,
-    background: ArrayLike = ...,
-    lights_in: Space = ...,
-    transfer: Transfer = ...,
     depth: bool,
     context: Any = ...,
+    **options: Unpack[SharedRenderOptions],
 ) -> Image | tuple[Image, NDArray[np.float32]]: ...
 def render(
     vertices: Any,
@@ -411,22 +379,9 @@ def render(
     scene: Any = None,
     camera: Any = None,
     *,
-    width: int = 512,
-    height: int = 512,
-    shading: Shading = "phong",
-    normals: ArrayLike | None = None,
-    colors: Any = None,
-    color_material: str | None = None,
-    color_material_face: Face = "front_and_back",
-    model: ArrayLike | None = None,
-    normalize: bool = True,
-    rescale_normal: bool = False,
-    cull: Cull | None = None,
-    background: ArrayLike = (0.0, 0.0, 0.0, 0.0),
-    lights_in: Space = "eye",
-    transfer: Transfer = "linear",
     depth: bool = False,
     context: Any = None,
+    **options: Unpack[SharedRenderOptions],
 ) -> Image | tuple[Image, NDArray[np.float32]]:
     """`gs.render` drawn by OpenGL with `raster_shaders`: the same arguments and result
     (float32), for comparing a GL rendering of the scene with glshade's (`gs.compare`).
@@ -449,39 +404,17 @@ def render(
         a dim fill fixed in the world, a light grey material.
     camera : Camera, optional
         As for `gs.render`; None (the default) is the camera `gs.render` frames the mesh's
-        bounds with (placed by `model`), for an image of `width` x `height`.
-    width : int
-        As for `gs.render`.
-    height : int
-        As for `gs.render`.
-    shading : {"phong", "gouraud", "flat"}
-        As for `gs.render`; this name and the others below are case-insensitive.
-    normals : (n, 3) or (m, 3) float, optional
-        As for `gs.render`.
-    colors : (n, 3) or (n, 4) float or uint8, optional, or False
-        As for `gs.render`.
-    color_material : {None, "ambient", "diffuse", "specular", "emission", "ambient_and_diffuse"}
-        As for `gs.render`.
-    color_material_face : {"front_and_back", "front", "back"}
-        As for `gs.render`.
-    model : (4, 4) float, optional
-        As for `gs.render`.
-    normalize : bool
-        As for `gs.render`.
-    rescale_normal : bool
-        As for `gs.render`.
-    cull : {None, "back", "front", "front_and_back"}
-        As for `gs.render`.
-    background : (3,) or (4,) float
-        As for `gs.render`.
-    lights_in : {"eye", "world"}
-        As for `gs.render`.
-    transfer : {"linear", "srgb", "gamma2.2"}
-        As for `gs.render`: the encoding of the image's RGB, applied to GL's float32 result.
+        bounds with (placed by ``model``), for an image of ``width`` x ``height``.
     depth : bool
         As for `gs.render`.
     context : moderngl.Context, optional
         Default: `context()`.
+    **options
+        `gs.render`'s options that GL's pipeline has, with `gs.render`'s defaults: `width`,
+        `height`, `shading`, `normals`, `colors`, `color_material`, `color_material_face`,
+        `model`, `normalize`, `rescale_normal`, `cull`, `background`, `lights_in` and
+        `transfer` (the encoding of the image's RGB, applied to GL's float32 result). Any
+        other name is a TypeError.
 
     Returns
     -------
@@ -501,39 +434,30 @@ def render(
     ColorRangeWarning
         As `gs.render`: for a `background` that looks like 0-255 bytes.
     """
-    w = integer(width, "width", 1, 16384)
-    h = integer(height, "height", 1, 16384)
-    mode = one_of(shading, "shading", ("flat", "gouraud", "phong"))
-    encoding = transfer_name(transfer)
-    m = transform(model, "model")
+    o = shared_defaults(gs_render, options, "render")
+    w = integer(o["width"], "width", 1, 16384)
+    h = integer(o["height"], "height", 1, 16384)
+    mode = one_of(o["shading"], "shading", ("flat", "gouraud", "phong"))
+    encoding = transfer_name("linear" if o["transfer"] is None else o["transfer"])
+    m = transform(o["model"], "model")
+    mesh = {name: o[name] for name in ("normals", "colors", "color_material", "lights_in")}
     given = render_input(
-        vertices,
-        faces,
-        scene,
-        camera,
-        shading=mode,
-        normals=normals,
-        colors=colors,
-        color_material=color_material,
-        lights_in=lights_in,
-        model=m,
-        width=w,
-        height=h,
-        texture=False,
-    )
+        vertices, faces, scene, camera, shading=mode, model=m, width=w, height=h, texture=False,
+        **mesh,
+    )  # fmt: skip
     if not isinstance(given.scene, Scene):
         raise TypeError(
-            "glsl.render draws GL's lighting equation; a glshade.gltf.Scene (the metallic-"
-            "roughness model) has no GLSL counterpart here yet: use glshade.render"
+            f"glsl.render draws GL's lighting equation; a {type(given.scene).__module__}."
+            f"{type(given.scene).__name__} has no GLSL counterpart here yet: use glshade.render"
         )
     scene = given.scene
-    warn_if_bytes(color(background, "background"), "background", "render")
+    warn_if_bytes(color(o["background"], "background"), "background", "render")
     v = given.vertices.astype(np.float64)
     f = given.faces
     modelview = given.camera.view @ m
     linear = modelview[:3, :3]
     normal_matrix = np.linalg.inv(linear).T
-    if rescale_normal:
+    if o["rescale_normal"]:
         normal_matrix = normal_matrix / np.linalg.norm(np.linalg.inv(linear)[2])
     eye = v @ linear.T + modelview[:3, 3]
     colors_given = given.colors
@@ -556,12 +480,12 @@ def render(
         h,
         scene,
         shading=cast(Shading, mode),
-        normalize=normalize,
+        normalize=o["normalize"],
         colors=colors_given,
         color_material=given.color_material,
-        color_material_face=color_material_face,
-        cull=cull,
-        background=background,
+        color_material_face=o["color_material_face"],
+        cull=o["cull"],
+        background=o["background"],
         context=context,
     )
     image = apply_transfer(targets.color, encoding).view(Image)

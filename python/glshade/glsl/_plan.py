@@ -1,11 +1,11 @@
 """Which terms a scene's GLSL computes: the CPU kernel's plan (``Scene.plan``), decided in Python.
 
-The rules are those of ``src/lighting/plan.rs``: a light term is left out where its colour is
-zero, a side's specular where its material (and no tracked vertex colour) has none, the power
-where the shininess is 0 (0^0 = 1), attenuation where (k0, k1, k2) = (1, 0, 0), the cone where
-the cutoff is 180, a directional light's VP, spot factor and (infinite viewer, Blinn) halfway
-vector are per-light constants. Lights that need the same terms share one loop over uniform
-arrays.
+The rules are those of ``src/lighting/fixed_function/plan.rs``: a light term is left out where
+its colour is zero, a side's specular where its material (and no tracked vertex colour) has
+none, the power where the shininess is 0 (0^0 = 1), attenuation where (k0, k1, k2) = (1, 0, 0),
+the cone where the cutoff is 180, a directional light's VP, spot factor and (infinite viewer,
+Blinn) halfway vector are per-light constants. Lights that need the same terms share one loop
+over uniform arrays.
 """
 
 from __future__ import annotations

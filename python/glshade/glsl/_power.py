@@ -1,6 +1,6 @@
 """GLSL of the lighting equation's powers, the specular (n̂⊙ĥ)^s_rm or (r̂⊙VP_e)^s_rm and the
 spot factor (P_pli→V ⊙ ŝ_dli)^s_rli, formed as the CPU kernel forms them
-(``src/lighting/power.rs``).
+(``src/lighting/fixed_function/power.rs``).
 
 1 - cos is taken as x = |â - b̂|²/2, which has no cancellation near the highlight, and the power
 as exp(s·ln(1 - x)): GLSL's pow(cos, s) rounds cos first and multiplies that rounding by s.
@@ -56,7 +56,7 @@ float gs_log1p(float y) {
 }
 
 // How the length of a vector that stands for a unit direction enters a power: near 1
-// (|v|^2 in [0.5, 2]) as |v| - 1, elsewhere as ln |v| (src/lighting/power.rs Scale).
+// (|v|^2 in [0.5, 2]) as |v| - 1, elsewhere as ln |v| (src/lighting/fixed_function/power.rs Scale).
 struct GSScale {
     bool near;
     float magnitude;  // |v|, at most the largest float
@@ -108,7 +108,7 @@ GSScale gs_scale(vec3 v) {
 }
 
 // (scale.magnitude max(c, 0))^s for unit a, b with a.b = c, and section 2.1.1's 0^0 = 1:
-// exp(s ln(1 - x)), x = |a - b|^2 / 2 (src/lighting/power.rs cos_pow).
+// exp(s ln(1 - x)), x = |a - b|^2 / 2 (src/lighting/fixed_function/power.rs cos_pow).
 float gs_cos_pow(float c, vec3 a, vec3 b, float s, GSScale scale) {
     if (s == 0.0) {
         return 1.0;

@@ -224,7 +224,7 @@ def library(plan: Plan, lengths: dict[str, int]) -> str:
         "    GS_PRECISE float d = (a.x * b.x + a.y * b.y) + a.z * b.z;",
         "    return d;",
         "}",
-        "// m v in the kernel's order, column by column (src/lighting/prepare.rs mul3).",
+        "// m v in the kernel's order, column by column (src/lighting/transform.rs mul3).",
         "vec3 gs_transform(mat3 m, vec3 v) {",
         "    GS_PRECISE vec3 t = (m[0] * v.x + m[1] * v.y) + m[2] * v.z;",
         "    return t;",

@@ -1,5 +1,5 @@
 """The uniform values of a plan's GLSL: per-light constants computed in float64 and rounded once
-to float32, as the CPU kernel's `prepare` does (``src/lighting/prepare.rs``)."""
+to float32, as the CPU kernel's `prepare` does (``src/lighting/fixed_function/prepare.rs``)."""
 
 from __future__ import annotations
 

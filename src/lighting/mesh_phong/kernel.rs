@@ -20,21 +20,21 @@
 //! GLSL's undefined 0^0); a decay of 0 is x^0 = 1. The sum is held at `T::MAX`, so every
 //! output is finite for finite input.
 
-use glam::DMat4;
+use std::fmt;
 
 use crate::errors::error::Error;
-use crate::lighting::kernel::{emit, world_inputs, Block, SideColors};
+use crate::lighting::block::{Block, SideColors};
+use crate::lighting::mesh_phong::options::Options;
 use crate::lighting::mesh_phong::plan::Plan;
-use crate::lighting::mesh_phong::shade::Options;
-use crate::lighting::prepare::{cast_saturating, rgb, ColorClamp, Transform};
-use crate::lighting::shade::BlockShader;
+use crate::lighting::round::{cast_saturating, rgb};
+use crate::lighting::world::{kept, placed, rgb_of, unit, Frame, WorldKernel};
 use crate::numbers::elementary::ElementaryLanes;
-use crate::numbers::real::{normalize_or_zero, Real};
-use crate::simd::float::{Float, Vector3};
+use crate::numbers::real::Real;
+use crate::simd::float::Float;
 use crate::simd::lanes::{normalize_and_length, normalize_and_length_fast, Lanes, V3};
 use crate::threejs::light::Kind as LightKind;
 use crate::threejs::material::Side;
-use crate::threejs::scene::{Scene, Viewer};
+use crate::threejs::scene::{ValidScene, Viewer};
 
 /// Fresnel's exponent in base 2 is `(FRESNEL[0]·lh + FRESNEL[1])·lh` (`F_Schlick`).
 const FRESNEL: [f64; 2] = [-5.55473, -6.98316];
@@ -93,12 +93,6 @@ struct Hemisphere<T: Real> {
     direction: [T; 3],
     ground: [T; 3],
     sky_minus_ground: [T; 3],
-}
-
-/// A unit vector in `T` from a nonzero `f64` direction.
-fn unit<T: Real>(d: [f64; 3]) -> [T; 3] {
-    let u = normalize_or_zero::<f64>(glam::DVec3::from_array(d));
-    u.to_array().map(T::from_f64)
 }
 
 /// `x^e` for x ≥ 0 and a per-call e ≥ 0: 1 for e = 0 (a decay of 0), by multiplication for
@@ -190,130 +184,12 @@ pub struct Kernel<T: Real> {
     viewer: Viewer,
     /// The camera's position or the unit view direction, in `T`.
     view: [T; 3],
-    /// Model to world coordinates (`None`: the identity).
-    transform: Option<Transform<T>>,
-    clamp: bool,
+    /// The model matrix, the finite test and the clamp.
+    frame: Frame<T>,
     plan: Plan,
 }
 
 impl<T: Real> Kernel<T> {
-    /// Prepares `scene` for arrays of `T` with `options`, whose model takes the arrays to world
-    /// coordinates.
-    ///
-    /// # Errors
-    /// A value error for a model that is not finite, affine and invertible, or whose entries
-    /// exceed `T`'s range.
-    pub fn new(scene: &Scene, options: &Options) -> Result<Self, Error> {
-        let (model, clamp): (Option<&DMat4>, ColorClamp) = (options.model.as_ref(), options.clamp);
-        let plan = Plan::new(scene);
-        let physical = scene.physically_correct_lights;
-        // Legacy lights multiply every irradiance by π (`irradiance *= PI`).
-        let pi = if physical { 1.0 } else { std::f64::consts::PI };
-        let radiance = |color: [f64; 3], intensity: f64| color.map(|c| c * intensity * pi);
-        let lights = plan
-            .lights
-            .iter()
-            .map(|&(i, _)| {
-                let light = &scene.lights[i];
-                let source = match light.kind {
-                    LightKind::Directional { direction } => {
-                        Source::Directional { l: unit(direction) }
-                    }
-                    LightKind::Point {
-                        position,
-                        distance,
-                        decay,
-                    } => Source::Point {
-                        position: cast_saturating(position.into()),
-                        falloff: Falloff::new(distance, decay, physical),
-                    },
-                    LightKind::Spot {
-                        position,
-                        direction,
-                        distance,
-                        decay,
-                        ..
-                    } => {
-                        let (cone_cos, penumbra_cos) = light.cone().unwrap_or((1.0, 1.0));
-                        Source::Spot {
-                            position: cast_saturating(position.into()),
-                            axis: unit(direction),
-                            cone_cos: T::from_f64(cone_cos),
-                            inverse_width: T::from_f64(1.0 / (penumbra_cos - cone_cos)),
-                            falloff: Falloff::new(distance, decay, physical),
-                        }
-                    }
-                    LightKind::Ambient | LightKind::Hemisphere { .. } => {
-                        unreachable!("the plan's direct lights are directional, point or spot")
-                    }
-                };
-                Light {
-                    source,
-                    radiance: rgb(&radiance(light.color, light.intensity)),
-                }
-            })
-            .collect();
-        let hemispheres = plan
-            .hemispheres
-            .iter()
-            .map(|&i| {
-                let light = &scene.lights[i];
-                let LightKind::Hemisphere {
-                    direction,
-                    ground_color,
-                } = light.kind
-                else {
-                    unreachable!("the plan's hemisphere lights are hemisphere lights")
-                };
-                let sky = radiance(light.color, light.intensity);
-                let ground = radiance(ground_color, light.intensity);
-                Hemisphere {
-                    direction: unit(direction),
-                    ground: rgb(&ground),
-                    sky_minus_ground: rgb(&std::array::from_fn::<f64, 3, _>(|k| {
-                        sky[k] - ground[k]
-                    })),
-                }
-            })
-            .collect();
-        let mut ambient = [0.0; 3];
-        for light in scene.lights.iter().filter(|l| l.kind == LightKind::Ambient) {
-            let r = radiance(light.color, light.intensity);
-            ambient = std::array::from_fn(|k| ambient[k] + r[k]);
-        }
-        let m = &scene.material;
-        let s = m.shininess.max(LEAST_SHININESS);
-        let view = match scene.viewer {
-            Viewer::Position(p) => cast_saturating(p.into()),
-            Viewer::Direction(d) => unit(d),
-        };
-        let transform = model
-            .map(|model| Transform::for_shading(model, false, true, plan.positions))
-            .transpose()?;
-        Ok(Self {
-            lights,
-            hemispheres,
-            ambient: rgb(&ambient),
-            diffuse: rgb(&m.color.map(|c| c / std::f64::consts::PI)),
-            specular: rgb(&m.specular),
-            shininess: T::from_f64(s),
-            normalisation: T::from_f64((0.5 * s + 1.0) / (4.0 * std::f64::consts::PI)),
-            emissive: rgb(&m.emissive.map(|e| e * m.emissive_intensity)),
-            opacity: T::from_f64(m.opacity),
-            flip: m.side == Side::Back,
-            viewer: scene.viewer,
-            view,
-            transform,
-            clamp: clamp == ColorClamp::On,
-            plan,
-        })
-    }
-
-    /// What the call computes.
-    pub fn plan(&self) -> &Plan {
-        &self.plan
-    }
-
     /// (Σ E_i, Σ E_i·F_i·D_i/4) over the direct lights, RGB, at unit normals `n`, points `p`
     /// and unit view vectors `v`.
     #[inline(always)]
@@ -387,18 +263,121 @@ impl<T: Real> Kernel<T> {
     }
 }
 
-impl<T: Real> BlockShader<T> for Kernel<T> {
-    #[inline(always)]
-    fn reads_positions(&self) -> bool {
-        self.plan.positions
+impl<T: Real> WorldKernel<T> for Kernel<T> {
+    type Scene = ValidScene;
+    type Options = Options;
+
+    fn new(scene: &ValidScene, options: &Options) -> Result<Self, Error> {
+        let plan = Plan::new(scene);
+        let physical = scene.physically_correct_lights;
+        // Legacy lights multiply every irradiance by π (`irradiance *= PI`).
+        let pi = if physical { 1.0 } else { std::f64::consts::PI };
+        let radiance = |color: [f64; 3], intensity: f64| color.map(|c| c * intensity * pi);
+        let lights = kept(&plan.lights, &scene.lights)
+            .map(|light| {
+                let source = match light.kind {
+                    LightKind::Directional { direction } => {
+                        Source::Directional { l: unit(direction) }
+                    }
+                    LightKind::Point {
+                        position,
+                        distance,
+                        decay,
+                    } => Source::Point {
+                        position: cast_saturating(position.into()),
+                        falloff: Falloff::new(distance, decay, physical),
+                    },
+                    LightKind::Spot {
+                        position,
+                        direction,
+                        distance,
+                        decay,
+                        ..
+                    } => {
+                        let (cone_cos, penumbra_cos) = light.cone().unwrap_or((1.0, 1.0));
+                        let (position, axis) = placed(position, direction);
+                        Source::Spot {
+                            position,
+                            axis,
+                            cone_cos: T::from_f64(cone_cos),
+                            inverse_width: T::from_f64(1.0 / (penumbra_cos - cone_cos)),
+                            falloff: Falloff::new(distance, decay, physical),
+                        }
+                    }
+                    LightKind::Ambient | LightKind::Hemisphere { .. } => {
+                        unreachable!("the plan's direct lights are directional, point or spot")
+                    }
+                };
+                Light {
+                    source,
+                    radiance: rgb(&radiance(light.color, light.intensity)),
+                }
+            })
+            .collect();
+        let hemispheres = plan
+            .hemispheres
+            .iter()
+            .map(|&i| {
+                let light = &scene.lights[i];
+                let LightKind::Hemisphere {
+                    direction,
+                    ground_color,
+                } = light.kind
+                else {
+                    unreachable!("the plan's hemisphere lights are hemisphere lights")
+                };
+                let sky = radiance(light.color, light.intensity);
+                let ground = radiance(ground_color, light.intensity);
+                Hemisphere {
+                    direction: unit(direction),
+                    ground: rgb(&ground),
+                    sky_minus_ground: rgb(&std::array::from_fn::<f64, 3, _>(|k| {
+                        sky[k] - ground[k]
+                    })),
+                }
+            })
+            .collect();
+        let mut ambient = [0.0; 3];
+        for light in scene.lights.iter().filter(|l| l.kind == LightKind::Ambient) {
+            let r = radiance(light.color, light.intensity);
+            ambient = std::array::from_fn(|k| ambient[k] + r[k]);
+        }
+        let m = &scene.material;
+        let s = m.shininess.max(LEAST_SHININESS);
+        let view = match scene.viewer {
+            Viewer::Position(p) => cast_saturating(p.into()),
+            Viewer::Direction(d) => unit(d),
+        };
+        let frame = Frame::new(options.model.as_ref(), options.clamp, plan.positions)?;
+        Ok(Self {
+            lights,
+            hemispheres,
+            ambient: rgb(&ambient),
+            diffuse: rgb(&m.color.map(|c| c / std::f64::consts::PI)),
+            specular: rgb(&m.specular),
+            shininess: T::from_f64(s),
+            normalisation: T::from_f64((0.5 * s + 1.0) / (4.0 * std::f64::consts::PI)),
+            emissive: rgb(&m.emissive.map(|e| e * m.emissive_intensity)),
+            opacity: T::from_f64(m.opacity),
+            flip: m.side == Side::Back,
+            viewer: scene.viewer,
+            view,
+            frame,
+            plan,
+        })
     }
-    #[inline(always)]
+
+    fn parts(&self) -> (&Frame<T>, &dyn fmt::Display) {
+        (&self.frame, &self.plan)
+    }
+
     fn sides(&self) -> usize {
         self.plan.sides
     }
+
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
-        let (p, mut n, finite) = world_inputs(input, self.transform.as_ref(), self.plan.positions);
+        let (p, mut n, finite) = self.frame.inputs(input);
         // The back of a double-sided material, and a back-sided one, light the negated normal.
         if self.flip != (side == 1) {
             n = -n;
@@ -417,11 +396,7 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
         let mut diffuse = V3::splat(self.diffuse);
         let mut alpha = V::splat(self.opacity);
         if let Some(c) = &input.colors {
-            diffuse = diffuse.mul_elements(V3 {
-                x: c[0],
-                y: c[1],
-                z: c[2],
-            });
+            diffuse = diffuse.mul_elements(rgb_of(c));
             alpha = alpha * c[3];
         }
         let max = V::splat(T::MAX);
@@ -431,17 +406,18 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
             y: rgb.y.min(max),
             z: rgb.z.min(max),
         };
-        let zero = V::splat(T::ZERO);
-        [emit(rgb, alpha, finite, self.clamp), [zero; 4]]
+        self.frame.emit(rgb, alpha, finite)
     }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::lighting::clamp::ColorClamp;
     use crate::simd::lanes::Pack;
     use crate::threejs::light::Light as ThreeLight;
     use crate::threejs::material::MeshPhongMaterial;
+    use crate::threejs::scene::Scene;
 
     fn scene(kind: LightKind) -> Scene {
         Scene {
@@ -469,27 +445,7 @@ mod tests {
     }
 
     #[test]
-    fn a_light_at_the_vertex_lights_finitely() {
-        let at = [0.5, -0.25, 1.0];
-        for physical in [true, false] {
-            let mut s = scene(LightKind::Point {
-                position: at,
-                distance: 0.0,
-                decay: 2.0,
-            });
-            s.physically_correct_lights = physical;
-            let options = Options {
-                clamp: ColorClamp::Off,
-                ..Options::default()
-            };
-            let kernel = Kernel::<f64>::new(&s, &options).unwrap();
-            let c = one_vertex(&kernel, at, [0.0, 0.0, 1.0], 0);
-            assert!(c.iter().all(|x| x.is_finite()), "{c:?}");
-        }
-    }
-
-    #[test]
-    fn unlit_scenes_read_no_positions() {
+    fn a_hemisphere_light_reads_no_positions() {
         let mut s = scene(LightKind::Hemisphere {
             direction: [0.0, 2.0, 0.0],
             ground_color: [0.0, 0.0, 1.0],
@@ -500,8 +456,8 @@ mod tests {
             clamp: ColorClamp::Off,
             ..Options::default()
         };
-        let kernel = Kernel::<f64>::new(&s, &options).unwrap();
-        assert!(!kernel.plan().positions);
+        let kernel = Kernel::<f64>::new(&s.clone().validated().unwrap(), &options).unwrap();
+        assert!(!kernel.plan.positions);
         // n·d = 1: the sky colour alone, × 3 / π × colour, plus the emission.
         let c = one_vertex(&kernel, [f64::NAN; 3], [0.0, 1.0, 0.0], 0);
         let pi = std::f64::consts::PI;
@@ -517,15 +473,17 @@ mod tests {
             direction: [0.0, 0.0, 1.0],
         });
         s.material.side = Side::Double;
-        let kernel = Kernel::<f64>::new(&s, &Options::default()).unwrap();
-        assert_eq!(kernel.plan().sides, 2);
+        let kernel =
+            Kernel::<f64>::new(&s.clone().validated().unwrap(), &Options::default()).unwrap();
+        assert_eq!(kernel.plan.sides, 2);
         let p = [0.0, 0.0, 0.0];
         let back = one_vertex(&kernel, p, [0.0, 0.0, -1.0], 1);
         let front = one_vertex(&kernel, p, [0.0, 0.0, 1.0], 0);
         assert_eq!(back, front);
         assert!(front[0] > 0.5);
         s.material.side = Side::Back;
-        let kernel = Kernel::<f64>::new(&s, &Options::default()).unwrap();
+        let kernel =
+            Kernel::<f64>::new(&s.clone().validated().unwrap(), &Options::default()).unwrap();
         assert_eq!(one_vertex(&kernel, p, [0.0, 0.0, -1.0], 0), front);
     }
 
@@ -539,7 +497,8 @@ mod tests {
             angle: std::f64::consts::FRAC_PI_4,
             penumbra: 0.0,
         });
-        let kernel = Kernel::<f64>::new(&s, &Options::default()).unwrap();
+        let kernel =
+            Kernel::<f64>::new(&s.clone().validated().unwrap(), &Options::default()).unwrap();
         let n = [0.0, 0.0, 1.0];
         let inside = one_vertex(&kernel, [0.99, 0.0, 0.0], n, 0);
         let outside = one_vertex(&kernel, [1.01, 0.0, 0.0], n, 0);

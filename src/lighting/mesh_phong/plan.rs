@@ -1,23 +1,14 @@
 //! What a `MeshPhongMaterial` call computes, decided once per call like the GL plan
-//! ([`crate::lighting::plan`]): lights without colour skipped, the direct lights in three.js'
+//! ([`crate::lighting::fixed_function::plan`]): lights without colour skipped, the direct lights in three.js'
 //! order, positions read only where a point or spot light shines or a perspective camera
 //! sees a direct light's highlight, and one or two sides.
 
 use std::fmt;
 
+use crate::lighting::model::write_reads;
+use crate::lighting::world::PunctualKind as Kind;
 use crate::threejs::light::Kind as LightKind;
 use crate::threejs::scene::{Scene, Viewer};
-
-/// One direct light's kind, as the kernel evaluates it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    /// l is a per-call constant; no falloff.
-    Directional,
-    /// l and the distance falloff per vertex.
-    Point,
-    /// l, the falloff and the cone's smoothstep per vertex.
-    Spot,
-}
 
 /// Which terms of the model a call evaluates.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -96,18 +87,9 @@ impl Plan {
 impl fmt::Display for Plan {
     /// One line: what is read and which terms run.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let reads = if self.positions {
-            "positions and normals"
-        } else {
-            "normals only"
-        };
-        write!(f, "reads {reads}")?;
+        write_reads(f, self.positions, "")?;
         for (i, kind) in &self.lights {
-            let kind = match kind {
-                Kind::Directional => "directional (l constant)",
-                Kind::Point => "point (l, falloff)",
-                Kind::Spot => "spot (l, falloff, smoothstep cone)",
-            };
+            let kind = kind.terms("falloff", "smoothstep cone");
             write!(f, "; light {i} {kind}: Lambert + Blinn-Phong with Fresnel")?;
         }
         for i in &self.hemispheres {

@@ -12,19 +12,19 @@
 //! at `MAX`), so a light at the vertex itself (d = 0, whose direction is taken as zero: nl at
 //! its floor 0.001) gives a large finite colour, never inf or NaN.
 
-use glam::DMat4;
+use std::fmt;
 
 use crate::errors::error::Error;
 use crate::gltf::light::Punctual;
-use crate::gltf::scene::Scene;
-use crate::lighting::kernel::{emit, world_inputs, Block, SideColors};
+use crate::gltf::scene::ValidScene;
+use crate::lighting::block::{Block, SideColors};
 use crate::lighting::metallic_roughness::brdf::{brdf, Albedo, Cosines, Surface, LEAST_COSINE};
+use crate::lighting::metallic_roughness::options::{ColorRole, Options};
 use crate::lighting::metallic_roughness::plan::Plan;
-use crate::lighting::metallic_roughness::shade::{ColorRole, Options};
-use crate::lighting::prepare::{cast_saturating, rgb, ColorClamp, Transform};
-use crate::lighting::shade::BlockShader;
-use crate::numbers::real::{normalize_or_zero, Real};
-use crate::simd::float::{Float, Vector3};
+use crate::lighting::round::{cast_saturating, rgb};
+use crate::lighting::world::{kept, placed, rgb_of, unit, Frame, WorldKernel};
+use crate::numbers::real::Real;
+use crate::simd::float::Float;
 use crate::simd::lanes::{each, normalize_and_length, normalize_and_length_fast, Lanes, V3};
 
 /// Where one light's rays come from, in `T`.
@@ -51,12 +51,6 @@ struct Light<T: Real> {
     radiance: [T; 3],
 }
 
-/// A unit vector in `T` from a nonzero `f64` direction.
-fn unit<T: Real>(d: [f64; 3]) -> [T; 3] {
-    let u = normalize_or_zero::<f64>(glam::DVec3::from_array(d));
-    u.to_array().map(T::from_f64)
-}
-
 /// The model for one call: the material, lights and options in `T`, and the plan.
 pub struct Kernel<T: Real> {
     lights: Vec<Light<T>>,
@@ -71,82 +65,12 @@ pub struct Kernel<T: Real> {
     /// What the per-vertex colours are.
     role: ColorRole,
     camera: [T; 3],
-    /// Model to world coordinates (`None`: the identity).
-    transform: Option<Transform<T>>,
-    clamp: bool,
+    /// The model matrix, the finite test and the clamp.
+    frame: Frame<T>,
     plan: Plan,
 }
 
 impl<T: Real> Kernel<T> {
-    /// Prepares `scene` for arrays of `T` with `options`, whose model takes the arrays to world
-    /// coordinates.
-    ///
-    /// # Errors
-    /// A value error for a model that is not finite, affine and invertible, or whose entries
-    /// exceed `T`'s range.
-    pub fn new(scene: &Scene, options: &Options) -> Result<Self, Error> {
-        let (model, clamp): (Option<&DMat4>, ColorClamp) = (options.model.as_ref(), options.clamp);
-        let m = &scene.material;
-        let base = [m.base_color[0], m.base_color[1], m.base_color[2]];
-        let surface = Surface::<T>::new(base, m.metallic, m.roughness);
-        let plan = Plan::new(scene, surface.has_diffuse());
-        let lights = plan
-            .lights
-            .iter()
-            .map(|&(i, _)| {
-                let light = &scene.lights[i];
-                let source = match light.punctual {
-                    Punctual::Directional { direction } => Source::Directional {
-                        l: unit(direction.map(|x| -x)),
-                    },
-                    Punctual::Point { position } => Source::Point {
-                        position: cast_saturating(position.into()),
-                    },
-                    Punctual::Spot {
-                        position,
-                        direction,
-                        ..
-                    } => {
-                        let (scale, offset) = light.cone().unwrap_or((0.0, 0.0));
-                        Source::Spot {
-                            position: cast_saturating(position.into()),
-                            axis: unit(direction),
-                            scale: T::from_f64(scale),
-                            offset: T::from_f64(offset),
-                        }
-                    }
-                };
-                Light {
-                    source,
-                    radiance: rgb(&light.color.map(|c| c * light.intensity)),
-                }
-            })
-            .collect();
-        let constant: [f64; 3] =
-            std::array::from_fn(|i| base[i] * scene.ambient_light[i] + m.emissive[i]);
-        let transform = model
-            .map(|model| Transform::for_shading(model, false, true, plan.positions))
-            .transpose()?;
-        Ok(Self {
-            lights,
-            surface,
-            constant: rgb(&constant),
-            base: m.base_color.map(T::from_f64),
-            ambient: rgb(&scene.ambient_light),
-            emissive: rgb(&m.emissive),
-            role: options.colors,
-            camera: cast_saturating(scene.camera_position.into()),
-            transform,
-            clamp: clamp == ColorClamp::On,
-            plan,
-        })
-    }
-
-    /// What the call computes.
-    pub fn plan(&self) -> &Plan {
-        &self.plan
-    }
-
     /// Σ nl·radiance·f over the lights that shine, at unit normals `n`, view vectors `v` and
     /// points of `albedo`.
     #[inline(always)]
@@ -216,18 +140,70 @@ fn inverse_square<V: Lanes>(d: V) -> V {
     V::splat(V::T::ONE) / (d * d).max(V::splat(V::T::MIN_POSITIVE))
 }
 
-impl<T: Real> BlockShader<T> for Kernel<T> {
-    #[inline(always)]
-    fn reads_positions(&self) -> bool {
-        self.plan.positions
+impl<T: Real> WorldKernel<T> for Kernel<T> {
+    type Scene = ValidScene;
+    type Options = Options;
+
+    fn new(scene: &ValidScene, options: &Options) -> Result<Self, Error> {
+        let m = &scene.material;
+        let base = [m.base_color[0], m.base_color[1], m.base_color[2]];
+        let surface = Surface::<T>::new(base, m.metallic, m.roughness);
+        let plan = Plan::new(scene, surface.has_diffuse());
+        let lights = kept(&plan.lights, &scene.lights)
+            .map(|light| {
+                let source = match light.punctual {
+                    Punctual::Directional { direction } => Source::Directional {
+                        l: unit(direction.map(|x| -x)),
+                    },
+                    Punctual::Point { position } => Source::Point {
+                        position: cast_saturating(position.into()),
+                    },
+                    Punctual::Spot {
+                        position,
+                        direction,
+                        ..
+                    } => {
+                        let (position, axis) = placed(position, direction);
+                        let (scale, offset) = light.cone().unwrap_or((0.0, 0.0));
+                        let (scale, offset) = (T::from_f64(scale), T::from_f64(offset));
+                        Source::Spot {
+                            position,
+                            axis,
+                            scale,
+                            offset,
+                        }
+                    }
+                };
+                Light {
+                    source,
+                    radiance: rgb(&light.color.map(|c| c * light.intensity)),
+                }
+            })
+            .collect();
+        let constant: [f64; 3] =
+            std::array::from_fn(|i| base[i] * scene.ambient_light[i] + m.emissive[i]);
+        let frame = Frame::new(options.model.as_ref(), options.clamp, plan.positions)?;
+        Ok(Self {
+            lights,
+            surface,
+            constant: rgb(&constant),
+            base: m.base_color.map(T::from_f64),
+            ambient: rgb(&scene.ambient_light),
+            emissive: rgb(&m.emissive),
+            role: options.colors,
+            camera: cast_saturating(scene.camera_position.into()),
+            frame,
+            plan,
+        })
     }
-    #[inline(always)]
-    fn sides(&self) -> usize {
-        1
+
+    fn parts(&self) -> (&Frame<T>, &dyn fmt::Display) {
+        (&self.frame, &self.plan)
     }
+
     #[inline(always)]
     fn block<V: Lanes<T = T>>(&self, input: &Block<V>, _side: usize) -> SideColors<V> {
-        let (p, n, finite) = world_inputs(input, self.transform.as_ref(), self.plan.positions);
+        let (p, n, finite) = self.frame.inputs(input);
         // Per-vertex base colours (a texture's) change the albedo and the constant term.
         let base = match (&input.colors, self.role) {
             (Some(c), ColorRole::BaseColor) => {
@@ -248,92 +224,15 @@ impl<T: Real> BlockShader<T> for Kernel<T> {
         };
         let mut alpha = V::splat(self.base[3]);
         if let Some(b) = &base {
-            let b3 = V3 {
-                x: b[0],
-                y: b[1],
-                z: b[2],
-            };
-            rgb = b3.mul_add(V3::splat(self.ambient), rgb + V3::splat(self.emissive));
+            rgb = rgb_of(b).mul_add(V3::splat(self.ambient), rgb + V3::splat(self.emissive));
             alpha = b[3];
         } else if self.plan.constant {
             rgb = rgb + V3::splat(self.constant);
         }
         if let (Some(c), ColorRole::Multiply) = (&input.colors, self.role) {
-            rgb = rgb.mul_elements(V3 {
-                x: c[0],
-                y: c[1],
-                z: c[2],
-            });
+            rgb = rgb.mul_elements(rgb_of(c));
             alpha = alpha * c[3];
         }
-        let zero = V::splat(T::ZERO);
-        [emit(rgb, alpha, finite, self.clamp), [zero; 4]]
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::gltf::light::Light as GltfLight;
-    use crate::gltf::material::Material;
-    use crate::simd::lanes::Pack;
-
-    fn scene(punctual: Punctual) -> Scene {
-        Scene {
-            lights: vec![GltfLight {
-                punctual,
-                color: [1.0, 0.5, 0.25],
-                intensity: 3.0,
-            }],
-            material: Material {
-                base_color: [0.8, 0.6, 0.4, 0.5],
-                metallic: 0.3,
-                roughness: 0.0,
-                emissive: [0.0; 3],
-            },
-            ambient_light: [0.0; 3],
-            camera_position: [0.0, 0.0, 5.0],
-        }
-    }
-
-    fn one_vertex(kernel: &Kernel<f64>, p: [f64; 3], n: [f64; 3]) -> [f64; 4] {
-        let block = Block::<Pack<f64, 1>> {
-            positions: V3::splat(p),
-            normals: V3::splat(n),
-            colors: None,
-        };
-        kernel.block(&block, 0)[0].map(|c| c.0[0])
-    }
-
-    #[test]
-    fn a_light_at_the_vertex_lights_finitely() {
-        let at = [0.5, -0.25, 1.0];
-        let s = scene(Punctual::Point { position: at });
-        for clamp in [ColorClamp::On, ColorClamp::Off] {
-            let kernel = Kernel::<f64>::new(
-                &s,
-                &Options {
-                    clamp,
-                    ..Options::default()
-                },
-            )
-            .unwrap();
-            let c = one_vertex(&kernel, at, [0.0, 0.0, 1.0]);
-            assert!(c.iter().all(|x| x.is_finite()), "{c:?}");
-            assert!(c[0] > 0.0);
-        }
-    }
-
-    #[test]
-    fn unlit_scenes_read_no_positions() {
-        let mut s = scene(Punctual::Directional {
-            direction: [0.0, 0.0, -1.0],
-        });
-        s.lights[0].intensity = 0.0;
-        s.material.emissive = [0.25, 0.0, 0.0];
-        let kernel = Kernel::<f64>::new(&s, &Options::default()).unwrap();
-        assert!(!kernel.plan().positions);
-        let c = one_vertex(&kernel, [f64::NAN; 3], [0.0, 0.0, 1.0]);
-        assert_eq!(c, [0.25, 0.0, 0.0, 0.5]);
+        self.frame.emit(rgb, alpha, finite)
     }
 }

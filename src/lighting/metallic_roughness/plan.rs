@@ -1,5 +1,5 @@
 //! What a metallic-roughness call computes, decided once per call like the GL plan
-//! ([`crate::lighting::plan`]): lights without radiance are skipped, the diffuse part runs only
+//! ([`crate::lighting::fixed_function::plan`]): lights without radiance are skipped, the diffuse part runs only
 //! for a material with c_diff ≠ 0, positions are read only when some light shines, and the
 //! constant part (ambient and emission) is added only when it is not zero.
 
@@ -7,17 +7,8 @@ use std::fmt;
 
 use crate::gltf::light::Punctual;
 use crate::gltf::scene::Scene;
-
-/// One light's kind, as the kernel evaluates it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Kind {
-    /// l is a per-call constant; no attenuation.
-    Directional,
-    /// l and 1/d² per vertex.
-    Point,
-    /// l, 1/d² and the cone factor per vertex.
-    Spot,
-}
+use crate::lighting::model::write_reads;
+use crate::lighting::world::PunctualKind as Kind;
 
 /// Which terms of the model a call evaluates.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -65,23 +56,14 @@ impl Plan {
 impl fmt::Display for Plan {
     /// One line: what is read and which terms run.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let reads = if self.positions {
-            "positions and normals; v per vertex"
-        } else {
-            "normals only"
-        };
-        write!(f, "reads {reads}")?;
+        write_reads(f, self.positions, "; v per vertex")?;
         let terms = if self.diffuse {
             "diffuse+specular"
         } else {
             "specular"
         };
         for (i, kind) in &self.lights {
-            let kind = match kind {
-                Kind::Directional => "directional (l constant)",
-                Kind::Point => "point (l, 1/d²)",
-                Kind::Spot => "spot (l, 1/d², cone)",
-            };
+            let kind = kind.terms("1/d²", "cone");
             write!(f, "; light {i} {kind}: {terms}")?;
         }
         if self.constant {

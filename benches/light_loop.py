@@ -1,12 +1,12 @@
-"""glshade and Dr.Jit on the lights of ``examples/light_loop.rs``, one thread each.
+"""glshade and Dr.Jit on the lights of ``benches/light_loop.rs``, one thread each.
 
 The Rust example times light loops of three structures with no exactness safeguard; this script
 times ``gs.shade`` (float32, ``"fast"``) and the benchmark's Dr.Jit kernel
 (``glshade.lab.peers.drjit_shade``) on the same point lights, material and viewer, and on
 vertices of the same distribution, so the example's rates can be read against theirs::
 
-    cargo run --release --example light_loop -- 8 32
-    RAYON_NUM_THREADS=1 python examples/light_loop.py 8 32
+    cargo bench --bench light_loop -- 8 32
+    RAYON_NUM_THREADS=1 python benches/light_loop.py 8 32
 
 Both peers write RGBA rows from rows of positions and normals, which the example's kernels do
 not (they read planes and write one grey channel).

@@ -7,10 +7,12 @@ the same light with none of the fast mode's safeguards, its exponent compiled in
 compiler would write it; ``src/lab/lean.rs``), ``lean`` with each safeguard put back (``nan``:
 NaN for a non-finite normal; ``power``: |n|² - 1 from exact squares and the power on the
 complement; ``saturate``: the weights saturated) and with all three, and ``stream`` (the floor:
-the same traffic, no lighting)::
+the same traffic, no lighting). ``lean`` is the lab's, not the wheel's: it needs a build with
+the ``lab`` feature::
 
-    python examples/lean_directional.py                      # every thread
-    RAYON_NUM_THREADS=1 python examples/lean_directional.py  # one
+    maturin develop --release --features lab
+    python benches/lean_directional.py                      # every thread
+    RAYON_NUM_THREADS=1 python benches/lean_directional.py  # one
 
 Prints million vertices/s (medians of the rounds), each as a fraction of the floor, and each
 result's largest difference from ``gs.shade``; then the errors of ``gs.shade`` and ``lean``
@@ -49,9 +51,20 @@ def rates(methods: dict[str, Callable[[], object]], n: int) -> dict[str, float]:
     return {name: n / float(np.median(t)) / 1e6 for name, t in times.items()}
 
 
+def lean_directional() -> Callable[..., np.ndarray]:
+    """The lab build's lean bound; without it, an exit that names the build it needs."""
+    found: Callable[..., np.ndarray] | None = getattr(_glshade, "lean_directional", None)
+    if found is None:
+        sys.exit(
+            "this glshade build has no lean bound: build it with the lab feature, "
+            "maturin develop --release --features lab"
+        )
+    return found
+
+
 def candidates(scene: gs.Scene, normals: np.ndarray) -> dict[str, Callable[[], object]]:
     """The calls timed on `normals`, by name."""
-    lean = functools.partial(_glshade.lean_directional, scene._native, normals)
+    lean = functools.partial(lean_directional(), scene._native, normals)
     return {
         "gs.shade": functools.partial(gs.shade, normals, normals, scene),
         "lean": lean,
@@ -112,7 +125,7 @@ def highlight_errors(n: int = 4_000_000) -> None:
         line = [f"normals within ~{spread:g} of ĥ:"]
         for name, got in (
             ("fast", gs.shade(normals, normals, scene)),
-            ("lean", _glshade.lean_directional(scene._native, normals)),
+            ("lean", lean_directional()(scene._native, normals)),
         ):
             error = np.abs(got - exact)[:, :3].max(axis=1)
             over = int((error > bound).sum())

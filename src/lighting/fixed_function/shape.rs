@@ -1,4 +1,4 @@
-//! Kernels compiled for one shape of scene: the same kernel ([`crate::lighting::kernel`]) with some
+//! Kernels compiled for one shape of scene: the same kernel ([`crate::lighting::fixed_function::kernel`]) with some
 //! of the plan's flags fixed when it is compiled, so the compiler drops the terms the shape cannot
 //! have and the branches around the others, and more of a block's values stay in registers.
 //!
@@ -8,8 +8,8 @@
 //! (`tests::shape` checks it).
 
 use crate::gl::scene::Specular;
-use crate::lighting::plan::{LightKind, LightPlan, Plan};
-use crate::lighting::prepare::{Prepared, Viewer};
+use crate::lighting::fixed_function::plan::{LightKind, LightPlan, Plan};
+use crate::lighting::fixed_function::prepare::{Prepared, Viewer};
 use crate::numbers::real::Real;
 use crate::simd::dispatch::{Isa, LaneWork};
 
@@ -213,6 +213,13 @@ pub fn on_shape<T: Real, W: OnShape>(
     isa: Isa,
     work: W,
 ) -> W::Output {
+    // The inner loop of kernel work compiles the general kernel alone.
+    #[cfg(feature = "single-kernel")]
+    {
+        let _ = (plan, prepared, isa);
+        work.call::<General>()
+    }
+    #[cfg(not(feature = "single-kernel"))]
     if isa == Isa::Baseline {
         work.call::<General>()
     } else if fits(&Directional::KNOWN, plan, prepared) {

@@ -16,11 +16,11 @@
 //! and in one or two AVX2 registers a value (8 or 16 vertices a block). Every kernel reads positions and normals as
 //! planes (no transposes) and writes one grey channel (no ambient, no clamp): less than
 //! `gs.shade` does, so a structure that cannot lead a peer here cannot lead it in glshade.
-//! `examples/light_loop.py` times glshade and Dr.Jit on the same lights. Run both with one thread:
+//! `benches/light_loop.py` times glshade and Dr.Jit on the same lights. Run both with one thread:
 //!
 //! ```text
-//! cargo run --release --example light_loop -- 8 32
-//! RAYON_NUM_THREADS=1 python examples/light_loop.py 8 32
+//! cargo bench --bench light_loop -- 8 32
+//! RAYON_NUM_THREADS=1 python benches/light_loop.py 8 32
 //! ```
 #![allow(unsafe_code)] // std::arch's intrinsics
 
@@ -564,6 +564,7 @@ mod avx2 {
 fn main() {
     let counts: Vec<usize> = std::env::args()
         .skip(1)
+        .filter(|a| a != "--bench") // what `cargo bench` adds
         .map(|a| match a.parse() {
             Ok(n @ (8 | 32)) => n,
             _ => panic!("light counts are 8 or 32, not {a:?}"),

@@ -19,15 +19,19 @@ use std::marker::PhantomData;
 
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
-use crate::lighting::plan::{LightKind, Plan};
-use crate::lighting::power::{
+use crate::lighting::block::{emit, Block, SideColors};
+use crate::lighting::clamp::ColorClamp;
+use crate::lighting::driver::BlockShader;
+use crate::lighting::fixed_function::plan::{LightKind, Plan};
+use crate::lighting::fixed_function::power::{
     cos_pow, half_even_exponent, halfway_even_pow, halfway_pow, normal_scale, spot_factor,
     squared_minus_one, sum_exact, Scale,
 };
-use crate::lighting::prepare::{ColorClamp, Prepared, PreparedLight, Source, Transform, Viewer};
-use crate::lighting::shape::{flag, General, Shape};
+use crate::lighting::fixed_function::prepare::{Prepared, PreparedLight, Source, Viewer};
+use crate::lighting::fixed_function::shape::{flag, General, Shape};
 use crate::numbers::elementary::ElementaryLanes;
 use crate::numbers::real::Real;
+use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::{ldexp, Float};
 use crate::simd::lanes::{
     normalize_and_length, normalize_and_length_fast, normalize_or_zero_fast, LaneMask, Lanes,
@@ -167,48 +171,6 @@ impl<V: Lanes> Compensated<V> {
     }
 }
 
-/// One block's inputs, already loaded into lanes.
-#[derive(Clone, Copy)]
-pub struct Block<V: Lanes> {
-    /// Positions (model coordinates), or zeros when the plan does not read them.
-    pub positions: V3<V>,
-    /// Normals (model coordinates).
-    pub normals: V3<V>,
-    /// RGBA vertex colours for `GL_COLOR_MATERIAL`.
-    pub colors: Option<[V; 4]>,
-}
-
-/// The world-space positions and normals of a block for the models outside GL state (glTF's,
-/// three.js'), moved by the model `transform` if any (positions only when `positions` are
-/// read), and the lanes whose inputs are all finite (positions only when read).
-#[inline(always)]
-pub(crate) fn world_inputs<T: Real, V: Lanes<T = T>>(
-    input: &Block<V>,
-    transform: Option<&Transform<T>>,
-    positions: bool,
-) -> (V3<V>, V3<V>, V::Mask) {
-    let (mut p, mut n) = (input.positions, input.normals);
-    if let Some(t) = transform {
-        n = t.normal(n);
-        if positions {
-            p = t.point(p);
-        }
-    }
-    let mut finite = n.is_finite();
-    if positions {
-        finite = finite & p.is_finite();
-    }
-    if let Some(c) = &input.colors {
-        finite = finite & c[0].is_finite() & c[1].is_finite();
-        finite = finite & c[2].is_finite() & c[3].is_finite();
-    }
-    (p, n, finite)
-}
-
-/// The primary and secondary RGBA colours of one side of a block, after the clamp (the
-/// secondary is unused without separate specular).
-pub type SideColors<V> = [[V; 4]; 2];
-
 /// The RGBA lanes of a material colour.
 #[inline(always)]
 fn splat4<V: Lanes>(c: [V::T; 4]) -> [V; 4] {
@@ -230,46 +192,8 @@ fn v3<V: Lanes>(c: [V; 4]) -> V3<V> {
     }
 }
 
-/// `x` clamped to [0, 1] where `finite`, NaN elsewhere; + 0 turns −0 into +0, and the clamp
-/// keeps NaN, which `finite` then decides.
-#[inline(always)]
-fn clamp01<V: Lanes>(x: V, finite: V::Mask) -> V {
-    let zero = V::splat(V::T::ZERO);
-    V::select(
-        finite,
-        (x + zero).clamp(V::T::ZERO, V::T::ONE),
-        V::splat(V::T::NAN),
-    )
-}
-
-/// `x` as it is where `finite` (high dynamic range), NaN elsewhere; + 0 turns −0 into +0.
-#[inline(always)]
-fn unclamped<V: Lanes>(x: V, finite: V::Mask) -> V {
-    V::select(finite, x + V::splat(V::T::ZERO), V::splat(V::T::NAN))
-}
-
-/// An output colour: `rgb` and `alpha`, clamped unless `clamp` is off (one branch per block).
-#[inline(always)]
-pub(crate) fn emit<V: Lanes>(rgb: V3<V>, alpha: V, finite: V::Mask, clamp: bool) -> [V; 4] {
-    if clamp {
-        [
-            clamp01(rgb.x, finite),
-            clamp01(rgb.y, finite),
-            clamp01(rgb.z, finite),
-            clamp01(alpha, finite),
-        ]
-    } else {
-        [
-            unclamped(rgb.x, finite),
-            unclamped(rgb.y, finite),
-            unclamped(rgb.z, finite),
-            unclamped(alpha, finite),
-        ]
-    }
-}
-
 /// A prepared scene and its plan: the kernel of one `shade` call, compiled for scenes of shape
-/// `S` (whose flags the plan must have: see [`crate::lighting::shape::fits`]).
+/// `S` (whose flags the plan must have: see [`crate::lighting::fixed_function::shape::fits`]).
 pub struct Kernel<'a, T: Real, S: Shape = General> {
     /// The per-call constants.
     pub prepared: &'a Prepared<T>,
@@ -787,6 +711,24 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         }
 
         self.lit_block(p, n, colors, finite, side)
+    }
+}
+
+impl<T: Real, S: Shape> BlockShader<T> for Kernel<'_, T, S> {
+    #[inline(always)]
+    fn reads_positions(&self) -> bool {
+        Kernel::reads_positions(self)
+    }
+    #[inline(always)]
+    fn sides(&self) -> usize {
+        Kernel::sides(self)
+    }
+    #[inline(always)]
+    fn block<V: Lanes<T = T>>(&self, input: &Block<V>, side: usize) -> SideColors<V> {
+        Kernel::block(self, input, side)
+    }
+    fn dispatch<W: LaneWork>(isa: Isa, work: W) {
+        S::run(isa, work);
     }
 }
 

@@ -10,7 +10,8 @@ use std::fmt;
 
 use crate::gl::material::ColorMaterialMode;
 use crate::gl::scene::Specular;
-use crate::lighting::prepare::{Prepared, Source, Viewer};
+use crate::lighting::fixed_function::prepare::{Prepared, Source, Viewer};
+use crate::lighting::model::write_reads;
 use crate::numbers::real::Real;
 
 /// The terms one light contributes.
@@ -35,6 +36,7 @@ pub struct LightPlan {
 
 impl LightPlan {
     /// The light has a range or a soft spot edge: not a GL light.
+    #[cfg_attr(feature = "single-kernel", allow(dead_code))] // only the shapes ask
     pub fn edges(self) -> bool {
         self.range || self.soft_edge
     }
@@ -212,12 +214,7 @@ fn nonzero<T: Real>(c: &[T]) -> bool {
 impl fmt::Display for Plan {
     /// One line: what is read and which terms each light computes.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        let reads = if self.positions {
-            "positions and normals"
-        } else {
-            "normals only"
-        };
-        write!(f, "reads {reads}")?;
+        write_reads(f, self.positions, "")?;
         let normal = match (self.unit_normal, self.normal_length) {
             (true, true) => "; n̂ and ln|n|",
             (true, false) => "; n̂",

@@ -1,0 +1,33 @@
+//! The metallic-roughness model as a [`WorldModel`]: glTF state ([`ValidScene`]) lit by the
+//! kernel of [`crate::lighting::metallic_roughness::kernel`], one linear RGBA colour per vertex.
+//!
+//! Normals are normalised; a vertex colour (RGB or RGBA) multiplies the result, alpha
+//! included, as pyrender's `color_multiplier` does, or with [`ColorRole::BaseColor`] the base
+//! colour. A vertex whose normal or colour is not finite, or whose position is not finite
+//! when some light shines, gets NaN. float32 arithmetic errs up to 3.3e-5 where the model is
+//! ill-conditioned (|n·v| near its 0.001 floor, the highlight of roughness 0.04), so `f32`
+//! arrays are computed in `f64`.
+
+use crate::gltf::scene::ValidScene;
+use crate::lighting::clamp::ColorClamp;
+use crate::lighting::metallic_roughness::kernel::Kernel;
+#[cfg(doc)]
+use crate::lighting::metallic_roughness::options::ColorRole;
+use crate::lighting::metallic_roughness::options::Options;
+use crate::lighting::world::WorldModel;
+use crate::numbers::real::Real;
+
+impl WorldModel for ValidScene {
+    const NAME: &'static str = "metallic-roughness (pyrender's mesh.frag)";
+    type Options = Options;
+    type Kernel<T: Real> = Kernel<T>;
+    fn light_count(&self) -> usize {
+        self.lights.len()
+    }
+    fn options(clamp: ColorClamp) -> Options {
+        Options {
+            clamp,
+            ..Options::default()
+        }
+    }
+}
