@@ -52,6 +52,10 @@
 //! | `memory` | fallible allocation, zeroed scratch pages, memory to be written |
 //! | `errors` | the error type, stopping a call |
 
+// The inner loop of kernel work compiles one kernel for one instruction set: the other shapes
+// and the other sets' lanes are unused there.
+#![cfg_attr(feature = "single-kernel", allow(dead_code))]
+
 #[cfg(feature = "python")]
 mod python;
 

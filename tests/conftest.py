@@ -1,5 +1,6 @@
 """Shared test configuration: hypothesis profiles (HYPOTHESIS_PROFILE=ci|dev|thorough), the
-references' availability (`unavailable`, `require`) and the seeded `rng` fixture."""
+references' availability (`unavailable`, `require`), the seeded `rng` fixture, and the skip of
+the `shapes` tests where the build runs the general kernel alone."""
 
 import importlib
 import os
@@ -36,3 +37,20 @@ def rng() -> np.random.Generator:
     """A generator of fixed seed, new for each test: a test's data does not depend on which tests
     ran before it, or in what order."""
     return np.random.default_rng(13)
+
+
+def _general_kernel_only() -> bool:
+    """This build runs the general kernel alone: built with the `single-kernel` feature (the
+    inner loop of kernel work), or on the baseline instruction set, which has no shape kernels.
+    A directional light's plan then names the general kernel."""
+    import glshade as gs
+
+    return "general kernel" in gs.Scene(lights=[gs.Light()]).plan("float32")
+
+
+def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
+    shapes = [item for item in items if item.get_closest_marker("shapes")]
+    if shapes and _general_kernel_only():
+        skip = pytest.mark.skip(reason="this build runs the general kernel alone (single-kernel)")
+        for item in shapes:
+            item.add_marker(skip)

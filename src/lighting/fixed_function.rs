@@ -14,6 +14,4 @@ pub mod options;
 pub mod plan;
 pub mod power;
 pub mod prepare;
-// The inner loop of kernel work (feature `single-kernel`) compiles the general kernel alone.
-#[cfg_attr(feature = "single-kernel", allow(dead_code))]
 pub mod shape;

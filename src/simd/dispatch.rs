@@ -39,7 +39,6 @@ pub trait LaneWork {
 
 /// An instruction-set level of x86-64 (or the baseline of any other target).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
-#[cfg_attr(feature = "single-kernel", allow(dead_code))] // one level is compiled
 pub enum Isa {
     /// The target's baseline (SSE2 on x86-64).
     Baseline,
@@ -51,8 +50,7 @@ pub enum Isa {
 
 impl Isa {
     /// Every level, lowest first.
-    #[cfg_attr(feature = "single-kernel", allow(dead_code))] // one level is compiled
-    pub const ALL: [Isa; 3] = [Isa::Baseline, Isa::Avx2, Isa::Avx512];
+        pub const ALL: [Isa; 3] = [Isa::Baseline, Isa::Avx2, Isa::Avx512];
 
     /// The name used in `GLSHADE_ISA` and in plans: `"baseline"`, `"avx2"` or `"avx512"`.
     pub fn name(self) -> &'static str {
@@ -157,7 +155,7 @@ mod single {
         target_feature = "avx512vl",
         target_feature = "fma"
     ))]
-    pub use {super::Avx512 as Set, super::Isa::Avx512 as ISA};
+    pub(super) use {crate::simd::lanes::Avx512 as Set, super::Isa::Avx512 as ISA};
 
     #[cfg(all(
         target_arch = "x86_64",
@@ -170,14 +168,14 @@ mod single {
             target_feature = "avx512vl"
         ))
     ))]
-    pub use {super::Avx2 as Set, super::Isa::Avx2 as ISA};
+    pub(super) use {crate::simd::lanes::Avx2 as Set, super::Isa::Avx2 as ISA};
 
     #[cfg(not(all(
         target_arch = "x86_64",
         target_feature = "avx2",
         target_feature = "fma"
     )))]
-    pub use {super::Baseline as Set, super::Isa::Baseline as ISA};
+    pub(super) use {super::Baseline as Set, super::Isa::Baseline as ISA};
 }
 
 /// Defines, from one list of target features, the function that runs a [`LaneWork`] compiled

@@ -36,7 +36,6 @@ pub struct LightPlan {
 
 impl LightPlan {
     /// The light has a range or a soft spot edge: not a GL light.
-    #[cfg_attr(feature = "single-kernel", allow(dead_code))] // only the shapes ask
     pub fn edges(self) -> bool {
         self.range || self.soft_edge
     }

@@ -412,6 +412,7 @@ def test_specular_gate_is_part_of_the_scene() -> None:
 # --- documentation -----------------------------------------------------------------------------
 
 
+@pytest.mark.shapes  # Scene.plan's example prints the shape of its kernel
 def test_the_docstring_examples_print_what_they_say() -> None:
     import doctest
     import importlib

@@ -43,6 +43,7 @@ def test_one_bright_light_among_dim_ones(accuracy: str, count: int, bright: str)
         assert _ulps_apart(running, total) > ULPS["fast"]
 
 
+@pytest.mark.shapes
 def test_the_plan_names_grey_sums_where_the_kernel_sums_one_channel() -> None:
     white = gs.Lights(position=[(0, 0, 1, 0), (1, 1, 1, 1)], diffuse=(0.8, 0.8, 0.8))
     tinted = gs.Lights(
