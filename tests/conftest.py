@@ -42,10 +42,13 @@ def rng() -> np.random.Generator:
 def _general_kernel_only() -> bool:
     """This build runs the general kernel alone: built with the `single-kernel` feature (the
     inner loop of kernel work), or on the baseline instruction set, which has no shape kernels.
-    A directional light's plan then names the general kernel."""
+    The plan of a scene of the directional shape (one directional light and a specular
+    material, under GL's infinite viewer) then names the general kernel."""
     import glshade as gs
 
-    return "general kernel" in gs.Scene(lights=[gs.Light()]).plan("float32")
+    material = gs.Material(specular=(0.5, 0.5, 0.5, 1.0), shininess=32)
+    directional = gs.Scene(lights=[gs.Light(position=(0, 0, 1, 0))], material=material)
+    return "general kernel" in directional.plan("float32")
 
 
 def pytest_collection_modifyitems(items: list[pytest.Item]) -> None:
