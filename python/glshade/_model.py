@@ -5,8 +5,8 @@ Every scene type is a `Model`: `glshade.Scene` (GL's fixed-function equation),
 ``MeshPhongMaterial``). A scene holds its native scene, which the binding's one `shade`,
 `describe` and `render` take whatever the model, and answers for itself what differs between
 the models: which of GL's options it takes, the scene a render lights with, the faces a
-render culls by default. `shade`, `shade_mesh`, `render`, `glsl` and `dask` ask the scene and
-never test its type.
+render culls by default. `shade`, `shade_mesh`, `render` and `dask` ask the scene and never
+test its type; `glsl` and `explain`, which draw GL's equation alone, refuse the others.
 
 The names of each model, in Python, in the binding and in the Rust crate (its state and its
 model)::
