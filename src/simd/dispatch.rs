@@ -50,7 +50,7 @@ pub enum Isa {
 
 impl Isa {
     /// Every level, lowest first.
-        pub const ALL: [Isa; 3] = [Isa::Baseline, Isa::Avx2, Isa::Avx512];
+    pub const ALL: [Isa; 3] = [Isa::Baseline, Isa::Avx2, Isa::Avx512];
 
     /// The name used in `GLSHADE_ISA` and in plans: `"baseline"`, `"avx2"` or `"avx512"`.
     pub fn name(self) -> &'static str {
@@ -155,7 +155,7 @@ mod single {
         target_feature = "avx512vl",
         target_feature = "fma"
     ))]
-    pub(super) use {crate::simd::lanes::Avx512 as Set, super::Isa::Avx512 as ISA};
+    pub(super) use {super::Isa::Avx512 as ISA, crate::simd::lanes::Avx512 as Set};
 
     #[cfg(all(
         target_arch = "x86_64",
@@ -168,7 +168,7 @@ mod single {
             target_feature = "avx512vl"
         ))
     ))]
-    pub(super) use {crate::simd::lanes::Avx2 as Set, super::Isa::Avx2 as ISA};
+    pub(super) use {super::Isa::Avx2 as ISA, crate::simd::lanes::Avx2 as Set};
 
     #[cfg(not(all(
         target_arch = "x86_64",
