@@ -97,7 +97,6 @@ pub use gl::vertex_colors::VertexColors;
 pub use lighting::clamp::ColorClamp;
 pub use lighting::fixed_function::options::{Accuracy, ShadeOptions};
 pub use lighting::model::{describe, shade, shade_uninit, Model};
-pub use lighting::world::{WorldKernel, WorldModel};
 
 /// The glTF 2.0 metallic-roughness model as pyrender evaluates it: its scene, material and
 /// punctual lights (world coordinates, `f64`) and its options. [`shade`], [`shade_uninit`],
