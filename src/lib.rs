@@ -94,8 +94,9 @@ pub use gl::light::{Light, LIGHT_ROW_LEN};
 pub use gl::material::{ColorMaterial, ColorMaterialMode, Face, Material, MATERIAL_ROW_LEN};
 pub use gl::scene::{Scene, Specular, ValidScene};
 pub use gl::vertex_colors::VertexColors;
+pub use lighting::accuracy::Accuracy;
 pub use lighting::clamp::ColorClamp;
-pub use lighting::fixed_function::options::{Accuracy, ShadeOptions};
+pub use lighting::fixed_function::options::ShadeOptions;
 pub use lighting::model::{describe, shade, shade_uninit, Model};
 
 /// The glTF 2.0 metallic-roughness model as pyrender evaluates it: its scene, material and

@@ -14,12 +14,13 @@
 //!
 //! The two world models share one path ([`world`]); what only GL has (shape kernels, the
 //! modelview, accuracy tiers, two-sided colour planes) stays in [`fixed_function`]. Shared by
-//! several models: the clamp option ([`clamp`]), the transform of positions and normals
+//! several models: the accuracy option ([`accuracy`]), the clamp option ([`clamp`]), the transform of positions and normals
 //! ([`transform`]) and per-call values rounded to the kernel's type ([`round`]).
 //!
 //! Uses [`crate::threejs`], [`crate::gltf`], [`crate::gl`], [`crate::numbers`],
 //! [`crate::simd`], [`crate::memory`] and [`crate::errors`].
 
+pub mod accuracy;
 pub mod block;
 pub mod clamp;
 pub mod driver;

@@ -11,10 +11,10 @@ from typing import Any, ClassVar, Generic, TypeVar
 import numpy as np
 
 from . import _glshade
-from ._intake import number, vector
+from ._intake import accuracy_choice, number, vector
 from ._model import Model, at_default
 from ._records import set_field
-from ._typing import Float64Array
+from ._typing import Accuracy, Float64Array
 
 __all__ = ["WorldScene", "record_fields", "set_fields"]
 
@@ -92,17 +92,21 @@ class WorldScene(Model, Generic[LightT, MaterialT]):
         """The names of the colours `shade` returns: one, linear RGBA."""
         return ("color",)
 
-    def plan(self, dtype: Any = np.float32, *, clamp: bool = True) -> str:
+    def plan(
+        self, dtype: Any = np.float32, *, accuracy: Accuracy = "fast", clamp: bool = True
+    ) -> str:
         """One line saying what `glshade.shade` computes for this scene with arrays of `dtype`:
-        the arithmetic (float64, float32 arrays widened), the instruction set, the lanes per
-        block, and which lights and terms run (a light of zero intensity or colour is skipped,
-        so is a term the material cannot have, and positions are read only where a light or
-        the camera needs them).
+        the accuracy, the arithmetic (float32 or float64; "float32 arrays widened" for exact
+        accuracy on float32 arrays), the instruction set, the lanes per block, and which lights
+        and terms run (a light of zero intensity or colour is skipped, so is a term the
+        material cannot have, and positions are read only where a light or the camera needs
+        them).
         """
         name = np.dtype(dtype).name
         if name not in ("float32", "float64"):
             raise ValueError(f"dtype must be float32 or float64, got {name}")
-        return str(_glshade.describe(self._native, dtype=name, accuracy="fast", clamp=clamp))
+        mode = accuracy_choice(accuracy)
+        return str(_glshade.describe(self._native, dtype=name, accuracy=mode, clamp=clamp))
 
     def _gl_options(self, given: Mapping[str, tuple[Any, Any]], *, colors: bool) -> dict[str, Any]:
         for name, (value, default) in given.items():

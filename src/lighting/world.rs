@@ -1,9 +1,8 @@
 //! The world models: glTF's metallic-roughness model and three.js' `MeshPhongMaterial`, whose
 //! scenes are in world coordinates and whose kernels are built per call. One path runs them
 //! all ([`WorldModel`] makes a [`Model`]): the kernel built from the scene and the options,
-//! run by the driver in `f64` (`f32` arrays widened and the result rounded once, so the models'
-//! ill-conditioned corners, powers near the highlight and small denominators, cost no float32
-//! rounding), and one line of description.
+//! run by the driver in the arrays' type with fast accuracy, or in `f64` with exact accuracy
+//! (`f32` arrays widened and the result rounded once), and one line of description.
 
 use std::fmt;
 use std::mem::MaybeUninit;
@@ -12,6 +11,7 @@ use glam::DMat4;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::block::{emit, Block, SideColors};
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::driver::{run_shader, BlockShader, Inputs};
@@ -37,8 +37,10 @@ pub trait WorldModel: Sync + Sized {
     }
     /// The lights summed per vertex.
     fn light_count(&self) -> usize;
-    /// The options of a call on arrays in world coordinates, clamped or not.
-    fn options(clamp: ColorClamp) -> Self::Options;
+    /// The options of a call on arrays in world coordinates, clamped or not, in `accuracy`.
+    fn options(clamp: ColorClamp, accuracy: Accuracy) -> Self::Options;
+    /// The accuracy of a call with `options`.
+    fn accuracy(options: &Self::Options) -> Accuracy;
 }
 
 /// A world model's kernel for arrays of `T`: built from the scene and the options of a call,
@@ -102,7 +104,7 @@ impl<W: WorldModel> Model for W {
         out: &mut [MaybeUninit<T>],
         stop: &Stop,
     ) -> Result<(), Error> {
-        if std::mem::size_of::<T>() == 8 {
+        if !W::accuracy(options).widens::<T>() {
             let kernel = Shader(W::Kernel::<T>::new(self, options)?);
             return run_shader(&kernel, Isa::detect(), inputs, out, stop);
         }
@@ -116,21 +118,35 @@ impl<W: WorldModel> Model for W {
         )
     }
 
-    /// The model's name, the arithmetic, the instruction set, the lanes per block and the plan.
+    /// The model's name, the accuracy, the arithmetic, the instruction set, the lanes per
+    /// block and the plan.
     fn describe<T: Real>(&self, options: &W::Options) -> Result<String, Error> {
-        let kernel = W::Kernel::<f64>::new(self, options)?;
-        let isa = Isa::detect();
-        let arrays = if std::mem::size_of::<T>() == 8 {
-            ""
+        let accuracy = W::accuracy(options);
+        let (bits, lanes, plan) = if accuracy.widens::<T>() || std::mem::size_of::<T>() == 8 {
+            let kernel = W::Kernel::<f64>::new(self, options)?;
+            (
+                64,
+                block_lanes::<f64>(Isa::detect()),
+                kernel.parts().1.to_string(),
+            )
         } else {
+            let kernel = W::Kernel::<T>::new(self, options)?;
+            (
+                32,
+                block_lanes::<T>(Isa::detect()),
+                kernel.parts().1.to_string(),
+            )
+        };
+        let arrays = if accuracy.widens::<T>() {
             " (float32 arrays widened)"
+        } else {
+            ""
         };
         Ok(format!(
-            "{}: float64 arithmetic{arrays}, {}, {} vertices per block; {}",
+            "{}: {}, float{bits} arithmetic{arrays}, {}, {lanes} vertices per block; {plan}",
             W::NAME,
-            isa.name(),
-            block_lanes::<f64>(isa),
-            kernel.parts().1,
+            accuracy.name(),
+            Isa::detect().name(),
         ))
     }
 }

@@ -13,8 +13,9 @@ use super::scene::Scene;
 use super::threejs::ThreejsScene;
 use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene as GlState;
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
-use crate::lighting::fixed_function::options::{Accuracy, ShadeOptions};
+use crate::lighting::fixed_function::options::ShadeOptions;
 use crate::lighting::model::Model;
 use crate::lighting::world::WorldModel;
 use crate::render::shader::RenderModel;
@@ -54,7 +55,7 @@ impl AnyScene<'_> {
 /// and GL's own, which the package passes for a `glshade.Scene` only.
 #[allow(clippy::struct_excessive_bools)] // GL's enables, as the call takes them
 pub struct Settings<'py> {
-    /// `"fast"` or `"exact"`: GL's arithmetic; the world models compute in `f64` either way.
+    /// `"fast"` or `"exact"`: the arrays' type, or `f64` whatever it is.
     pub accuracy: &'py str,
     /// The clamp of the colours to [0, 1].
     pub clamp: bool,
@@ -114,7 +115,7 @@ where
     W: WorldModel + RenderModel + Model<Options = <W as WorldModel>::Options>,
 {
     fn options(settings: &Settings<'_>) -> PyResult<<W as WorldModel>::Options> {
-        let (_, clamp) = common(settings)?;
-        Ok(W::options(clamp))
+        let (accuracy, clamp) = common(settings)?;
+        Ok(W::options(clamp, accuracy))
     }
 }

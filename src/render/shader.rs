@@ -130,6 +130,7 @@ impl RenderModel for GltfState {
             model: Some(options.model),
             clamp: options.clamp,
             colors,
+            ..GltfOptions::default()
         };
         Ok((Cow::Owned(placed.validated()?), options))
     }
@@ -164,6 +165,7 @@ impl RenderModel for ThreejsState {
         let options = MeshPhongOptions {
             model: Some(options.model),
             clamp: options.clamp,
+            ..MeshPhongOptions::default()
         };
         Ok((Cow::Owned(placed.validated()?), options))
     }

@@ -455,6 +455,22 @@ pub fn normalize_and_length_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V) {
     normalize_by::<V, false>(v)
 }
 
+/// [`normalize_and_length_fast`] with the reciprocal of the length too: the unit vector, |v|
+/// and 1/|v| (∞ for a zero `v`, 0 for an infinite one), from the one division the unit vector
+/// takes, for a light's falloff in 1/d.
+#[inline(always)]
+pub fn normalize_and_lengths_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V, V) {
+    let len2 = v.dot(v);
+    let ok = len2.ge(V::splat(V::T::MIN_POSITIVE)) & len2.le(V::splat(V::T::MAX));
+    if !ok.all() {
+        let (unit, length) = rescaled::<V, false>(&v);
+        return (unit, length, V::splat(V::T::ONE) / length);
+    }
+    let length = len2.sqrt();
+    let inverse = V::splat(V::T::ONE) / length;
+    (v.scale(inverse), length, inverse)
+}
+
 #[inline(always)]
 fn normalize_by<V: Lanes, const DIVIDE: bool>(v: V3<V>) -> (V3<V>, V) {
     let len2 = v.dot(v);

@@ -1,15 +1,18 @@
 //! What every world model does alike, checked on each through the one entry point
 //! ([`crate::lighting::model::shade`]): a light at the vertex lights it finitely, clamped or
 //! not, and a scene that no light shines on reads no positions (a NaN position leaves the row
-//! alone) and emits its emission at the material's opacity.
+//! alone) and emits its emission at the material's opacity; in `f64`, in `f32` (fast) and in
+//! `f32` arrays widened (exact).
 
 use crate::errors::stop::Stop;
 use crate::gltf::light::{Light as GltfLight, Punctual};
 use crate::gltf::material::Material;
 use crate::gltf::scene::{Scene as GltfScene, ValidScene as GltfState};
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::model::{shade, Model};
 use crate::lighting::world::WorldModel;
+use crate::numbers::real::Real;
 use crate::threejs::light::{Kind, Light as ThreejsLight};
 use crate::threejs::material::MeshPhongMaterial;
 use crate::threejs::scene::{Scene as ThreejsScene, ValidScene as ThreejsState, Viewer};
@@ -87,26 +90,51 @@ impl Cases for ThreejsState {
     }
 }
 
-/// The RGBA of one vertex at `p` with normal `n`, the front side.
-fn one_vertex<M: Cases>(scene: &M, p: [f64; 3], n: [f64; 3], clamp: ColorClamp) -> [f64; 4] {
-    let mut out = vec![0.0; 4 * Model::outputs(scene)];
-    let options = M::options(clamp);
+/// The RGBA of one vertex at `p` with normal `n`, the front side, in arrays of `T` with
+/// `accuracy`.
+fn one_vertex<M: Cases, T: Real>(
+    scene: &M,
+    p: [f64; 3],
+    n: [f64; 3],
+    clamp: ColorClamp,
+    accuracy: Accuracy,
+) -> [f64; 4] {
+    let mut out = vec![T::ZERO; 4 * Model::outputs(scene)];
+    let options = M::options(clamp, accuracy);
+    let (p, n) = (p.map(T::from_f64), n.map(T::from_f64));
     shade(scene, &[p], &[n], None, &options, &mut out, &Stop::new()).unwrap();
-    [out[0], out[1], out[2], out[3]]
+    [0, 1, 2, 3].map(|k| out[k].to_f64())
+}
+
+/// `one_vertex` in each arithmetic: `f64`, `f32` and `f32` widened to `f64`.
+fn every_arithmetic<M: Cases>(
+    scene: &M,
+    p: [f64; 3],
+    n: [f64; 3],
+    clamp: ColorClamp,
+) -> [[f64; 4]; 3] {
+    [
+        one_vertex::<M, f64>(scene, p, n, clamp, Accuracy::Fast),
+        one_vertex::<M, f32>(scene, p, n, clamp, Accuracy::Fast),
+        one_vertex::<M, f32>(scene, p, n, clamp, Accuracy::Exact),
+    ]
 }
 
 fn a_light_at_the_vertex_lights_finitely<M: Cases>() {
     let at = [0.5, -0.25, 1.0];
     let scene = M::point_light_at(at);
     for clamp in [ColorClamp::On, ColorClamp::Off] {
-        let c = one_vertex(&scene, at, [0.0, 0.0, 1.0], clamp);
-        assert!(c.iter().all(|x| x.is_finite()), "{}: {c:?}", M::NAME);
+        for c in every_arithmetic(&scene, at, [0.0, 0.0, 1.0], clamp) {
+            assert!(c.iter().all(|x| x.is_finite()), "{}: {c:?}", M::NAME);
+        }
     }
 }
 
 fn unlit_scenes_read_no_positions<M: Cases>() {
-    let c = one_vertex(&M::unlit(), [f64::NAN; 3], [0.0, 0.0, 1.0], ColorClamp::Off);
-    assert_eq!(c, [0.25, 0.0, 0.0, 0.5], "{}", M::NAME);
+    let n = [0.0, 0.0, 1.0];
+    for c in every_arithmetic(&M::unlit(), [f64::NAN; 3], n, ColorClamp::Off) {
+        assert_eq!(c, [0.25, 0.0, 0.0, 0.5], "{}", M::NAME);
+    }
 }
 
 #[test]

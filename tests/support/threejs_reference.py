@@ -96,6 +96,19 @@ def incident(light: object, p: np.ndarray, physical: bool) -> tuple[np.ndarray, 
     return direction, color * factor[:, None]
 
 
+def normal_and_view(
+    p: np.ndarray, n: np.ndarray, scene: gs.threejs.Scene, back: bool
+) -> tuple[np.ndarray, np.ndarray]:
+    """The unit normal as the side lit sees it (``normal_fragment_begin``: negated for a
+    back-sided material or the back of a double-sided one) and the unit view vector."""
+    normal = normalize(n)
+    if scene.material.side == "back" or back:
+        normal = -normal
+    if scene.view_direction is None:
+        return normal, normalize(scene.camera_position - p)
+    return normal, np.broadcast_to(normalize(scene.view_direction), p.shape)
+
+
 def meshphong_frag(
     p: np.ndarray,
     n: np.ndarray,
@@ -115,13 +128,7 @@ def meshphong_frag(
         diffuse_color *= c[:, :3]
         if c.shape[1] == 4:
             opacity = opacity * c[:, 3]
-    normal = normalize(n)
-    if m.side == "back" or back:
-        normal = -normal
-    if scene.view_direction is None:
-        view = normalize(scene.camera_position - p)
-    else:
-        view = np.broadcast_to(normalize(scene.view_direction), p.shape)
+    normal, view = normal_and_view(p, n, scene, back)
     specular = np.array(m.specular)
     shininess = max(m.shininess, 1e-4)  # refreshUniformsPhong: "to prevent pow( 0.0, 0.0 )"
     direct_diffuse = np.zeros_like(p)
@@ -209,3 +216,111 @@ def random_scene(rng: np.random.Generator, lights: int) -> gs.threejs.Scene:
         view_direction=rng.normal(size=3) if orthographic else None,
         physically_correct_lights=bool(rng.uniform() < 0.5),
     )
+
+
+U32 = 2.0**-24
+
+
+def _falloff_condition(d: np.ndarray, cutoff: float, decay: float, physical: bool) -> np.ndarray:
+    """The sensitivity of `irradiance_factor` to d and to its power's rounding: decay·(1 + |ln d|)
+    for d^decay, and the distance cutoff's 8r⁴/(1 - r⁴) (physical) or decay·r/(1 - r) (legacy)."""
+    with np.errstate(divide="ignore", invalid="ignore"):
+        r = d / cutoff if cutoff > 0 else np.zeros_like(d)
+        if physical:
+            kappa = decay * (1 + np.abs(np.log(np.maximum(d, 1e-30))))
+            if cutoff > 0:
+                kappa = kappa + np.where(r < 1, 8 * r**4 / (1 - r**4), 0)
+        elif cutoff > 0 and decay > 0:
+            kappa = np.where(r < 1, decay * (1 + r / (1 - r) + np.abs(np.log1p(-r))), 0)
+        else:
+            kappa = np.zeros_like(d)
+    return np.nan_to_num(kappa, posinf=0.0)
+
+
+def fast_bound(
+    p: np.ndarray,
+    n: np.ndarray,
+    scene: gs.threejs.Scene,
+    colors: np.ndarray | None = None,
+    back: bool = False,
+) -> np.ndarray:
+    """(k, 3) The bound of float32 fast mode against the exact value, per vertex and channel,
+    off the kinks `kinks` names (the Accuracy page's, in float64, without a model matrix):
+
+        2e-6 · max(1, Σ|terms|) + 8u · Σ_i κ_i · t_i
+
+    t_i is light i's term (diffuse and specular), κ_i the sum of its sensitivities to what
+    float32 forms: 1/nl, the spot's smoothstep slope over its value, the falloff's
+    (`_falloff_condition`), 6 for the normalisations and the sums, and on the specular part,
+    over min(1, |l + v|) (the halfway vector's direction is as uncertain as u/|l + v| where
+    the light faces the viewer), the power's s·(1/nh + |ln nh|) and 6 for Fresnel's power.
+    """
+    p, n = np.asarray(p, np.float64), np.asarray(n, np.float64)
+    m = scene.material
+    physical = scene.physically_correct_lights
+    diffuse_color = np.broadcast_to(np.abs(np.array(m.color)), p.shape).copy()
+    if colors is not None:
+        diffuse_color *= np.abs(np.asarray(colors, np.float64)[:, :3])
+    normal, view = normal_and_view(p, n, scene, back)
+    specular = np.array(m.specular)
+    s = max(m.shininess, 1e-4)
+    terms = np.zeros_like(p)
+    weighted = np.zeros_like(p)
+    pi = 1.0 if physical else PI
+    for light in scene.lights:
+        if isinstance(light, (gs.threejs.AmbientLight, gs.threejs.HemisphereLight)):
+            continue
+        direction, color = incident(light, p, physical)
+        kappa = np.full(len(p), 6.0)
+        if not isinstance(light, gs.threejs.DirectionalLight):
+            distance = np.linalg.norm(np.array(light.position) - p, axis=-1)
+            kappa += _falloff_condition(distance, light.distance, light.decay, physical)
+        if isinstance(light, gs.threejs.SpotLight) and light.penumbra > 0:
+            axis = normalize(np.array(light.position) - np.array(light.target))
+            cone_cos = math.cos(light.angle)
+            width = math.cos(light.angle * (1 - light.penumbra)) - cone_cos
+            t = np.clip((dot(direction, axis) - cone_cos) / width, 0, 1)
+            smooth = t * t * (3 - 2 * t)
+            with np.errstate(divide="ignore", invalid="ignore"):
+                kappa += np.where(smooth > 0, 6 * t * (1 - t) / width / smooth, 0)
+        nl = saturate(dot(normal, direction))
+        irradiance = nl[:, None] * color * pi
+        halfway = direction + view
+        spread = np.minimum(1, np.linalg.norm(halfway, axis=-1))
+        nh = saturate(dot(normal, normalize(halfway)))
+        with np.errstate(divide="ignore"):
+            power = (s * (1 / nh + np.abs(np.log(nh))) + 6) / spread
+        spec = irradiance * blinn_phong(direction, normal, view, specular, s)
+        diff = irradiance * RECIPROCAL_PI * diffuse_color
+        # 1/nl times the term: the term without its nl (finite where nl = 0).
+        unlit = (
+            color
+            * pi
+            * (RECIPROCAL_PI * diffuse_color + blinn_phong(direction, normal, view, specular, s))
+        )
+        terms += diff + spec
+        weighted += kappa[:, None] * (diff + spec) + unlit
+        weighted += np.where(spec > 0, np.nan_to_num(power)[:, None] * spec, 0)
+    rest = meshphong_frag(p, n, scene, colors, back)[:, :3] - terms  # indirect and emitted
+    return 2e-6 * np.maximum(1, terms + np.abs(rest)) + 8 * U32 * weighted
+
+
+def kinks(
+    p: np.ndarray, n: np.ndarray, scene: gs.threejs.Scene, margin: float = 1e-4, back: bool = False
+) -> np.ndarray:
+    """(k,) True where a vertex is within `margin` of a jump of the model, where the inputs' own
+    rounding picks the side: the edge of a spot without penumbra (its step), and n·h = 0 for a
+    shininess below 1 (where (n·h)^s leaps from 0 to nearly 1)."""
+    p, n = np.asarray(p, np.float64), np.asarray(n, np.float64)
+    normal, view = normal_and_view(p, n, scene, back)
+    near = np.zeros(len(p), bool)
+    for light in scene.lights:
+        if isinstance(light, (gs.threejs.AmbientLight, gs.threejs.HemisphereLight)):
+            continue
+        direction, _ = incident(light, p, scene.physically_correct_lights)
+        if isinstance(light, gs.threejs.SpotLight) and light.penumbra == 0:
+            axis = normalize(np.array(light.position) - np.array(light.target))
+            near |= np.abs(dot(direction, axis) - math.cos(light.angle)) < margin
+        if scene.material.shininess < 1:
+            near |= np.abs(dot(normal, normalize(direction + view))) < margin
+    return near

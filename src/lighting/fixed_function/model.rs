@@ -11,10 +11,11 @@ use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::scene::ValidScene;
 use crate::gl::vertex_colors::VertexColors;
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::driver::{run_shader, Inputs};
 use crate::lighting::fixed_function::kernel::Kernel;
-use crate::lighting::fixed_function::options::{Accuracy, ShadeOptions};
+use crate::lighting::fixed_function::options::ShadeOptions;
 use crate::lighting::fixed_function::plan::Plan;
 use crate::lighting::fixed_function::prepare::Prepared;
 use crate::lighting::fixed_function::shape::{on_shape, OnShape, Shape};
@@ -57,8 +58,7 @@ impl Model for ValidScene {
         stop: &Stop,
     ) -> Result<(), Error> {
         check_color_material(inputs.colors, options)?;
-        let widen = options.accuracy == Accuracy::Exact && std::mem::size_of::<T>() < 8;
-        if !widen {
+        if !options.accuracy.widens::<T>() {
             let prepared = Prepared::<T>::new(self, options)?;
             let plan = Plan::new(&prepared);
             return run(&prepared, &plan, Isa::detect(), inputs, out, stop);
@@ -85,10 +85,7 @@ impl Model for ValidScene {
             let plan = Plan::new(&prepared);
             (4, shape_of(&plan, &prepared, isa), plan)
         };
-        let mode = match options.accuracy {
-            Accuracy::Fast => "fast",
-            Accuracy::Exact => "exact",
-        };
+        let mode = options.accuracy.name();
         let range = if options.clamp == ColorClamp::Off {
             "; unclamped (high dynamic range)"
         } else {

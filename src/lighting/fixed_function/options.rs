@@ -2,35 +2,9 @@
 
 use glam::DMat4;
 
-use crate::errors::error::Error;
 use crate::gl::material::ColorMaterial;
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
-
-/// The arithmetic a `shade` call computes in.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Accuracy {
-    /// The input's precision: `f32` for `f32` input, `f64` for `f64` (the default).
-    #[default]
-    Fast,
-    /// `f64` throughout, whatever the input; `f32` results are rounded once at the end.
-    Exact,
-}
-
-impl Accuracy {
-    /// Parses `"fast"` or `"exact"`.
-    ///
-    /// # Errors
-    /// A value error naming `accuracy` for any other string.
-    pub fn parse(name: &str) -> Result<Self, Error> {
-        match name {
-            "fast" => Ok(Self::Fast),
-            "exact" => Ok(Self::Exact),
-            _ => Err(Error::value(format!(
-                "accuracy must be 'fast' or 'exact', got '{name}'"
-            ))),
-        }
-    }
-}
 
 /// The per-vertex options of a `shade` call (everything `glEnable` and `glColorMaterial` set
 /// that is not part of the [`Scene`](crate::gl::scene::Scene)).

@@ -24,6 +24,7 @@ use std::fmt;
 
 use crate::errors::error::Error;
 use crate::lighting::block::{Block, SideColors};
+use crate::lighting::fixed_function::power::{cos_pow, Scale};
 use crate::lighting::mesh_phong::options::Options;
 use crate::lighting::mesh_phong::plan::Plan;
 use crate::lighting::round::{cast_saturating, rgb};
@@ -31,7 +32,7 @@ use crate::lighting::world::{kept, placed, rgb_of, unit, Frame, WorldKernel};
 use crate::numbers::elementary::ElementaryLanes;
 use crate::numbers::real::Real;
 use crate::simd::float::Float;
-use crate::simd::lanes::{normalize_and_length, normalize_and_length_fast, Lanes, V3};
+use crate::simd::lanes::{normalize_and_length_fast, normalize_and_lengths_fast, Lanes, V3};
 use crate::threejs::light::Kind as LightKind;
 use crate::threejs::material::Side;
 use crate::threejs::scene::{ValidScene, Viewer};
@@ -132,9 +133,9 @@ impl<T: Real> Falloff<T> {
         }
     }
 
-    /// The factor at distances `d`.
+    /// The factor at distances `d`, of reciprocals `inverse` (1/d, ∞ at d = 0).
     #[inline(always)]
-    fn at<V: ElementaryLanes<T = T>>(&self, d: V) -> V {
+    fn at<V: ElementaryLanes<T = T>>(&self, d: V, inverse: V) -> V {
         let one = V::splat(T::ONE);
         match *self {
             Self::None => one,
@@ -149,8 +150,9 @@ impl<T: Real> Falloff<T> {
                 inverse_distance,
                 decay,
             } => {
-                let least = V::splat(T::from_f64(LEAST_FALLOFF_DENOMINATOR));
-                let f = one / pow(d, decay).max(least);
+                // 1/max(d^decay, 0.01) as min((1/d)^decay, 100): no division.
+                let most = V::splat(T::from_f64(1.0 / LEAST_FALLOFF_DENOMINATOR));
+                let f = pow(inverse, decay).min(most);
                 if inverse_distance == T::ZERO {
                     return f;
                 }
@@ -198,13 +200,14 @@ impl<T: Real> Kernel<T> {
         let one = V::splat(T::ONE);
         let ln2 = V::splat(T::from_f64(std::f64::consts::LN_2));
         let specular = V3::splat(self.specular);
+        let unit = Scale::unit();
         let (mut irradiance, mut reflected) = (V3::<V>::zero(), V3::<V>::zero());
         for light in &self.lights {
             let (l, factor) = match light.source {
                 Source::Directional { l } => (V3::splat(l), None),
                 Source::Point { position, falloff } => {
-                    let (l, d) = normalize_and_length_fast(V3::splat(position) - p);
-                    (l, Some(falloff.at(d)))
+                    let (l, d, inverse) = normalize_and_lengths_fast(V3::splat(position) - p);
+                    (l, Some(falloff.at(d, inverse)))
                 }
                 Source::Spot {
                     position,
@@ -213,14 +216,14 @@ impl<T: Real> Kernel<T> {
                     inverse_width,
                     falloff,
                 } => {
-                    let (l, d) = normalize_and_length_fast(V3::splat(position) - p);
+                    let (l, d, inverse) = normalize_and_lengths_fast(V3::splat(position) - p);
                     let c = l.dot(V3::splat(axis));
                     let t =
                         ((c - V::splat(cone_cos)) * V::splat(inverse_width)).clamp(T::ZERO, T::ONE);
                     let smooth =
                         t * t * (V::splat(T::from_f64(3.0)) - V::splat(T::from_f64(2.0)) * t);
                     let cone = V::select(c.gt(V::splat(cone_cos)), smooth, zero);
-                    (l, Some(cone * falloff.at(d)))
+                    (l, Some(cone * falloff.at(d, inverse)))
                 }
             };
             let nl = n.dot(l).clamp(T::ZERO, T::ONE);
@@ -237,7 +240,8 @@ impl<T: Real> Kernel<T> {
                 * lh
                 * ln2)
                 .exp();
-            let d = V::splat(self.normalisation) * pow(nh, self.shininess);
+            // (n·h)^s by squaring on the complement |n − h|²/2 for integer s (cos_pow).
+            let d = V::splat(self.normalisation) * cos_pow(nh, n, h, self.shininess, &unit);
             let f = V3 {
                 x: (one - specular.x).mul_add(fresnel, specular.x),
                 y: (one - specular.y).mul_add(fresnel, specular.y),
@@ -382,7 +386,7 @@ impl<T: Real> WorldKernel<T> for Kernel<T> {
         if self.flip != (side == 1) {
             n = -n;
         }
-        let n = normalize_and_length(n).0;
+        let n = normalize_and_length_fast(n).0;
         let [mut irradiance, specular] = if self.lights.is_empty() {
             [V3::zero(); 2]
         } else {

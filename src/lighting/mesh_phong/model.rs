@@ -4,8 +4,10 @@
 //!
 //! Normals are normalised; a vertex colour (RGB or RGBA) multiplies the material's `color`,
 //! and its alpha the opacity. A vertex whose normal or colour is not finite, or whose
-//! position is not finite when it is read, gets NaN. `f32` arrays are computed in `f64`.
+//! position is not finite when it is read, gets NaN. `f32` arrays are computed in `f32` with
+//! fast accuracy (the Accuracy page states the bound), in `f64` with exact accuracy.
 
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::mesh_phong::kernel::Kernel;
 use crate::lighting::mesh_phong::options::Options;
@@ -24,7 +26,14 @@ impl WorldModel for ValidScene {
     fn light_count(&self) -> usize {
         self.lights.len()
     }
-    fn options(clamp: ColorClamp) -> Options {
-        Options { model: None, clamp }
+    fn options(clamp: ColorClamp, accuracy: Accuracy) -> Options {
+        Options {
+            model: None,
+            clamp,
+            accuracy,
+        }
+    }
+    fn accuracy(options: &Options) -> Accuracy {
+        options.accuracy
     }
 }

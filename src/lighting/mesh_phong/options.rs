@@ -1,7 +1,9 @@
-//! The options of a call of `MeshPhongMaterial` besides the scene: the model matrix, the clamp.
+//! The options of a call of `MeshPhongMaterial` besides the scene: the model matrix, the clamp,
+//! the accuracy.
 
 use glam::DMat4;
 
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 
 /// The options of a `MeshPhongMaterial` call.
@@ -13,4 +15,6 @@ pub struct Options {
     /// Whether the colours are clamped to [0, 1] (a WebGL colour buffer of bytes clamps; a
     /// float render target does not).
     pub clamp: ColorClamp,
+    /// The arithmetic: the arrays' type, or `f64` whatever it is.
+    pub accuracy: Accuracy,
 }

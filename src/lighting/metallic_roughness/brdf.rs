@@ -129,9 +129,9 @@ pub fn brdf<T: Real, V: Lanes<T = T>>(
     let t = one - vh;
     let t2 = t * t;
     let q = t2 * t2 * t;
-    // Occlusion.
+    // Occlusion's denominators: G = nv·nl / that.
     let (k, one_k) = (V::splat(surface.k), V::splat(T::ONE - surface.k));
-    let g = (c.nv / c.nv.mul_add(one_k, k)) * (c.nl / c.nl.mul_add(one_k, k));
+    let occlusion = c.nv.mul_add(one_k, k) * c.nl.mul_add(one_k, k);
     // Distribution: 1 − (n·h)² as |n × h|², and n·h ≤ 0 clamped to 0 (denominator 1).
     let cross = V3 {
         x: n.y * h.z - n.z * h.y,
@@ -146,9 +146,12 @@ pub fn brdf<T: Real, V: Lanes<T = T>>(
         one,
     );
     let pi = V::splat(T::from_f64(std::f64::consts::PI));
-    let d = a2 / (pi * den * den);
-    let four_nl_nv = V::splat(T::from_f64(4.0)) * c.nl * c.nv;
-    let specular = g * d / (four_nl_nv + V::splat(T::from_f64(LEAST_COSINE)));
+    // G·D/(4·nl·nv + 0.001) as one quotient: one division for four (the divider is the
+    // kernel's scarcest unit), and each factor at least 10⁻³ or α⁴, so nothing underflows.
+    let nl_nv = c.nl * c.nv;
+    let four_nl_nv = V::splat(T::from_f64(4.0)) * nl_nv;
+    let specular = (a2 * nl_nv)
+        / (occlusion * (pi * den * den) * (four_nl_nv + V::splat(T::from_f64(LEAST_COSINE))));
     V3 {
         x: channel(albedo.f0[0], albedo.diffuse[0], q, specular, diffuse),
         y: channel(albedo.f0[1], albedo.diffuse[1], q, specular, diffuse),

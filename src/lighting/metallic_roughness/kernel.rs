@@ -25,7 +25,7 @@ use crate::lighting::round::{cast_saturating, rgb};
 use crate::lighting::world::{kept, placed, rgb_of, unit, Frame, WorldKernel};
 use crate::numbers::real::Real;
 use crate::simd::float::Float;
-use crate::simd::lanes::{each, normalize_and_length, normalize_and_length_fast, Lanes, V3};
+use crate::simd::lanes::{each, normalize_and_length_fast, normalize_and_lengths_fast, Lanes, V3};
 
 /// Where one light's rays come from, in `T`.
 #[derive(Clone, Copy, Debug)]
@@ -83,8 +83,8 @@ impl<T: Real> Kernel<T> {
             let (l, attenuation) = match light.source {
                 Source::Directional { l } => (V3::splat(l), None),
                 Source::Point { position } => {
-                    let (l, d) = normalize_and_length_fast(V3::splat(position) - p);
-                    (l, Some(inverse_square(d)))
+                    let (l, _, inverse) = normalize_and_lengths_fast(V3::splat(position) - p);
+                    (l, Some(inverse_square(inverse)))
                 }
                 Source::Spot {
                     position,
@@ -92,12 +92,12 @@ impl<T: Real> Kernel<T> {
                     scale,
                     offset,
                 } => {
-                    let (l, d) = normalize_and_length_fast(V3::splat(position) - p);
+                    let (l, _, inverse) = normalize_and_lengths_fast(V3::splat(position) - p);
                     let cd = (-V3::<V>::splat(axis).dot(l)).clamp(T::ZERO, T::ONE);
                     let s = cd
                         .mul_add(V::splat(scale), V::splat(offset))
                         .clamp(T::ZERO, T::ONE);
-                    (l, Some(s * s * inverse_square(d)))
+                    (l, Some(s * s * inverse_square(inverse)))
                 }
             };
             let nl = n.dot(l).clamp(least, T::ONE);
@@ -134,10 +134,10 @@ impl<T: Real> Kernel<T> {
     }
 }
 
-/// 1/d², finite at d = 0 (1/`MIN_POSITIVE`) and 0 at d = ∞.
+/// 1/d² from 1/d, with no division: finite at d = 0 (1/`MIN_POSITIVE`) and 0 at d = ∞.
 #[inline(always)]
-fn inverse_square<V: Lanes>(d: V) -> V {
-    V::splat(V::T::ONE) / (d * d).max(V::splat(V::T::MIN_POSITIVE))
+fn inverse_square<V: Lanes>(inverse: V) -> V {
+    (inverse * inverse).min(V::splat(V::T::ONE / V::T::MIN_POSITIVE))
 }
 
 impl<T: Real> WorldKernel<T> for Kernel<T> {
@@ -216,7 +216,7 @@ impl<T: Real> WorldKernel<T> for Kernel<T> {
             None => self.surface.splat(),
         };
         let mut rgb = if self.plan.positions {
-            let n = normalize_and_length(n).0;
+            let n = normalize_and_length_fast(n).0;
             let v = normalize_and_length_fast(V3::splat(self.camera) - p).0;
             self.lit(p, n, v, &albedo)
         } else {

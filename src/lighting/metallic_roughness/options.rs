@@ -1,8 +1,9 @@
 //! The options of a call of the metallic-roughness model besides the scene: the model matrix,
-//! the clamp and what vertex colours are.
+//! the clamp, what vertex colours are and the accuracy.
 
 use glam::DMat4;
 
+use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 
 /// What a call's per-vertex colours are.
@@ -27,4 +28,6 @@ pub struct Options {
     pub clamp: ColorClamp,
     /// What the per-vertex colours are.
     pub colors: ColorRole,
+    /// The arithmetic: the arrays' type, or `f64` whatever it is.
+    pub accuracy: Accuracy,
 }
