@@ -182,7 +182,7 @@ def bench_builds(
     vertices : int
         Vertices per call (default 10⁶).
     scenes : sequence of str
-        Names of `glshade.lab.scenes.shade_scenes` (default: all seven).
+        Names of `glshade.lab.scenes.shade_scenes` (default: every one).
     dtype : str
         ``"float32"`` (default) or ``"float64"``.
     threads : int

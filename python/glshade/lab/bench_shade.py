@@ -3,8 +3,9 @@
 no arithmetic), with float64 exact mode, all timed in the same rounds.
 
 Before it is timed, every method is checked against the float64 reference (`gs.shade` on the
-float64 inputs, ``accuracy="exact"``) on the smooth set (`smooth_set`); one whose largest error
-there exceeds `TOLERANCE` is reported as FAILED and not timed. The results go to JSON
+float64 inputs, ``accuracy="exact"``) on the smooth set (`smooth_set`; `world_smooth_set` for
+the world models, whose peers are `world_peers`); one whose largest error there exceeds
+`TOLERANCE` (`WORLD_TOLERANCE`) is reported as FAILED and not timed. The results go to JSON
 (`bench.save`) and, one row per scene, size and method, to CSV beside it (`write_csv`).
 """
 
@@ -42,26 +43,36 @@ from .baselines import (
 from .bench import save
 from .machine import describe, machine, usable_cpus
 from .peers import drjit_shade, glshade_threads, jax_shade, jax_threads, versions
-from .scenes import bench_scenes, bench_vertices, shade_scenes
+from .scenes import AnyScene, bench_scenes, bench_vertices, shade_scenes
 from .timing import BURST, Timing, ratio, time_rounds
+from .world_peers import drjit_world, numba_world
 
 __all__ = [
     "BURST",
     "CSV_COLUMNS",
+    "GRAZING",
     "MARGIN",
     "SIZES",
     "TOLERANCE",
+    "WORLD_TOLERANCE",
     "bench_shade",
     "call_overhead",
     "smooth_set",
     "thread_scaling",
     "wake_cost",
+    "world_smooth_set",
     "write_csv",
 ]
 
 SIZES = (10_000, 100_000, 1_000_000, 4_000_000)
 TOLERANCE = 1e-5  # the largest error on the smooth set of a method that is timed
+# The same for the world models: pyrender's own GGX denominator, (n·h)²(alpha² - 1) + 1, cancels
+# near the highlight, and in float32 its peers err up to 3e-5 on the bench's vertices.
+WORLD_TOLERANCE = 1e-4
 MARGIN = 1e-4  # the smooth set's least distance to a kink of the equation
+# The world models' smooth set: |n·v| at least this, off grazing views, where float32 knows n·v
+# only to u/|n·v| and the metallic-roughness model's specular term is that ill-conditioned.
+GRAZING = 1e-2
 # The methods, in the order of the table and the CSV; all but the stream are checked.
 METHODS = ("glshade", "exact64", "numpy", "numba", "drjit", "jax", "stream")
 # The numpy baseline is timed up to this many vertex-lights per call (8·10⁶: 10⁶ vertices and 8
@@ -161,12 +172,33 @@ def smooth_set(
     return smooth
 
 
+def world_smooth_set(
+    positions: NDArray[Any], normals: NDArray[Any], scene: gs.gltf.Scene | gs.threejs.Scene
+) -> NDArray[np.bool_]:
+    """The vertices of a world model's scene at least `GRAZING` from a grazing view
+    (|n̂ . v̂| > `GRAZING`), in float64 from the inputs as given; a zero normal is never smooth.
+    (The bench's world scenes have no jump: no spot without penumbra, no shininess below 1.)"""
+    p = np.asarray(positions, np.float64)
+    direction = getattr(scene, "view_direction", None)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        n_hat = _unit(np.asarray(normals, np.float64))
+        if direction is None:
+            view = _unit(np.asarray(scene.camera_position, np.float64) - p)
+        else:
+            view = _unit(np.asarray(direction, np.float64)[None, :])
+        n_dot_v = np.einsum("ij,ij->i", n_hat, np.broadcast_to(view, p.shape))
+        return np.asarray(np.abs(n_dot_v) > GRAZING)
+
+
 def _check(
-    methods: Mapping[str, Method], reference: NDArray[Any], smooth: NDArray[np.bool_]
+    methods: Mapping[str, Method],
+    reference: NDArray[Any],
+    smooth: NDArray[np.bool_],
+    tolerance: float,
 ) -> tuple[dict[str, float | None], dict[str, str]]:
     """Each method's largest |error| on the smooth set (None where it raised), and why each
     that is not to be timed FAILED (an exception, a wrong shape or dtype, an error above
-    `TOLERANCE` or NaN)."""
+    `tolerance` or NaN)."""
     errors: dict[str, float | None] = {}
     failed: dict[str, str] = {}
     for name, call in methods.items():
@@ -180,8 +212,8 @@ def _check(
             continue
         error = float(np.abs(out[smooth] - reference[smooth]).max(initial=0.0))
         errors[name] = error
-        if not error <= TOLERANCE:  # NaN fails too
-            failed[name] = f"error {error:.1e} > {TOLERANCE:.0e}"
+        if not error <= tolerance:  # NaN fails too
+            failed[name] = f"error {error:.1e} > {tolerance:.0e}"
     return errors, failed
 
 
@@ -194,7 +226,8 @@ def _header(compiled: Mapping[str, Any]) -> dict[str, Any]:
     print(
         f"float32, a new (n, 4) array per call; every method is first checked against "
         f"gs.shade(float64, accuracy='exact') on the smooth set (at least {MARGIN:.0e} from every "
-        f"kink; FAILED above {TOLERANCE:.0e}, then not timed); in each round every method "
+        f"kink; FAILED above {TOLERANCE:.0e}; the world models: |n.v| > {GRAZING:.0e}, FAILED "
+        f"above {WORLD_TOLERANCE:.0e}, then not timed); in each round every method "
         f"runs {BURST} times in a row and its fastest call counts"
     )
     found = versions()
@@ -255,11 +288,12 @@ def _header(compiled: Mapping[str, Any]) -> dict[str, Any]:
 def _methods(
     p: NDArray[np.float32],
     normals: NDArray[np.float32],
-    scene: gs.Scene,
+    scene: AnyScene,
     compiled: Mapping[str, Any],
 ) -> dict[str, Method]:
     """Every method of `METHODS` on these vertices, each a call with no arguments; the
-    compiled ones (numba, Dr.Jit, JAX) where `compiled` holds a callable, not a reason."""
+    compiled ones (numba, Dr.Jit, JAX) where `compiled` holds a callable, not a reason; the
+    numpy baseline for GL's scenes alone."""
     p64, normals64 = p.astype(np.float64), normals.astype(np.float64)
     reads_positions = "reads positions" in scene.plan()
     methods: dict[str, Method] = {
@@ -267,7 +301,7 @@ def _methods(
         "exact64": functools.partial(gs.shade, p64, normals64, scene, accuracy="exact"),
     }
     # numpy's Python loop over lights takes seconds per call beyond this; its rows get a dash.
-    if len(p) * max(1, len(scene.lights)) <= NUMPY_WORK:
+    if isinstance(scene, gs.Scene) and len(p) * max(1, len(scene.lights)) <= NUMPY_WORK:
         methods["numpy"] = functools.partial(numpy_shade, p, normals, scene)
     for name, shade in compiled.items():
         if not isinstance(shade, str):
@@ -311,16 +345,19 @@ def _print_row(
 
 
 def _measure(
-    name: str, scene: gs.Scene, n: int, repeat: int, compiled: Mapping[str, Any]
+    name: str, scene: AnyScene, n: int, repeat: int, compiled: Mapping[str, Any]
 ) -> dict[str, Any]:
     """Checks and times every method on `n` of the bench's vertices; prints the row and
     returns the JSON's entry for it."""
     p, normals = bench_vertices(n)
     methods = _methods(p, normals, scene, compiled)
     reference = gs.shade(p.astype(np.float64), normals.astype(np.float64), scene, accuracy="exact")
-    smooth = smooth_set(p, normals, scene)
+    if isinstance(scene, gs.Scene):
+        smooth, tolerance = smooth_set(p, normals, scene), TOLERANCE
+    else:
+        smooth, tolerance = world_smooth_set(p, normals, scene), WORLD_TOLERANCE
     checked = {k: call for k, call in methods.items() if k != "stream"}
-    errors, failed = _check(checked, reference, smooth)
+    errors, failed = _check(checked, reference, smooth, tolerance)
     entry: dict[str, Any] = {"scene": name, "plan": scene.plan(), "vertices": n}
     entry.update(smooth_vertices=int(smooth.sum()), error_smooth=errors, failed=failed)
     timed = {k: call for k, call in methods.items() if k not in failed}
@@ -489,11 +526,12 @@ def bench_shade(
     threads_check: bool = True,
 ) -> int:
     """Prints (and saves at `json_path`, with a CSV beside it), for every scene and size, each
-    method's error on the smooth set and the median million vertices per second of glshade,
-    numpy, numba, Dr.Jit and JAX, glshade's speed-up over each, its fraction of the streaming
-    floor (`_glshade.stream`: the same tasks, reads, transposes and fresh result, no lighting)
-    and float64 "exact" mode's time over float32 "fast" (all medians of per-round ratios); then
-    glshade's speed-up from 1 to 2 threads.
+    method's error on the smooth set (`smooth_set`; `world_smooth_set` for the world models)
+    and the median million vertices per second of glshade, numpy, numba, Dr.Jit and JAX (the
+    world models: numba and Dr.Jit, `world_peers`), glshade's speed-up over each, its
+    fraction of the streaming floor (`_glshade.stream`: the same tasks, reads, transposes and
+    fresh result, no lighting) and float64 "exact" mode's time over float32 "fast" (all
+    medians of per-round ratios); then glshade's speed-up from 1 to 2 threads.
 
     Parameters
     ----------
@@ -506,7 +544,7 @@ def bench_shade(
         None: neither is written.
     scenes : sequence of str, optional
         Keys of `scenes.shade_scenes` (`scenes.scene_names` parses the ``--scenes`` list);
-        default: all seven.
+        default: every one, GL's and the world models'.
     threads_check : bool
         Also time glshade on "8 mixed" at the largest size with 1 and 2 threads
         (`thread_scaling`).
@@ -518,9 +556,12 @@ def bench_shade(
     """
     names = list(scenes) if scenes is not None else list(shade_scenes())
     compiled: dict[str, Any] = {"numba": numba_shade(), "drjit": drjit_shade(), "jax": jax_shade()}
+    # The world models' peers: numba and Dr.Jit (no JAX or numpy version of them).
+    world: dict[str, Any] = {"numba": numba_world(), "drjit": drjit_world()}
     settings = _header(compiled)
     settings.update(sizes=list(sizes), rounds=repeat, burst=BURST, scenes=names)
     settings.update(tolerance=TOLERANCE, margin=MARGIN)
+    settings.update(world_tolerance=WORLD_TOLERANCE, grazing=GRAZING)
     overhead = call_overhead()
     print(f"per-call overhead: {overhead * 1e6:.1f} us (16 vertices, one light, median)")
     cold, warm = wake_cost()
@@ -544,7 +585,8 @@ def bench_shade(
             "   (million vertices/s; ratios: medians of per-round ratios)"
         )
         for n in sizes:
-            results["scenes"].append(_measure(name, scene, n, repeat, compiled))
+            peers = compiled if isinstance(scene, gs.Scene) else world
+            results["scenes"].append(_measure(name, scene, n, repeat, peers))
     if threads_check:
         results["threads"] = thread_scaling(max(sizes), repeat)
         _print_scaling(results["threads"], repeat)

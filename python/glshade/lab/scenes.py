@@ -21,10 +21,13 @@ __all__ = [
     "report_classes",
     "scene_names",
     "shade_scenes",
+    "world_scenes",
 ]
 
 F64 = NDArray[np.float64]
 F32 = NDArray[np.float32]
+WorldScene = gs.gltf.Scene | gs.threejs.Scene
+AnyScene = gs.Scene | WorldScene
 
 
 def bench_scenes() -> dict[str, gs.Scene]:
@@ -146,9 +149,64 @@ def extra_bench_scenes() -> dict[str, gs.Scene]:
     }
 
 
-def shade_scenes() -> dict[str, gs.Scene]:
-    """The scenes of ``bench shade`` by name: `bench_scenes`, then `extra_bench_scenes`."""
-    return {**bench_scenes(), **extra_bench_scenes()}
+def world_scenes() -> dict[str, WorldScene]:
+    """Six scenes of the world models for ``bench shade``, three each of glTF's
+    metallic-roughness and three.js' `MeshPhongMaterial`: one directional light; a point, a
+    directional and a spot light; the three with an ambient light. The camera is at the
+    origin, where `bench_vertices` face; the lights shine on them from above.
+
+    Returns
+    -------
+    dict of str to glshade.gltf.Scene or glshade.threejs.Scene
+        ``"gltf directional"``, ``"gltf 3 lights"``, ``"gltf 3 lights, ambient"`` and the same
+        three names with ``threejs``, in that order.
+    """
+    g, t = gs.gltf, gs.threejs
+    gltf_lights: list[g.DirectionalLight | g.PointLight | g.SpotLight] = [
+        g.PointLight(color=(1.0, 0.9, 0.8), intensity=20.0, position=(1.0, 2.0, 1.0)),
+        g.DirectionalLight(intensity=3.0, direction=(-0.3, -0.5, -1.0)),
+        g.SpotLight(
+            color=(0.8, 0.9, 1.0),
+            intensity=30.0,
+            position=(0.0, 0.0, 2.0),
+            direction=(0.0, 0.0, -1.0),
+            inner_cone_angle=0.3,
+            outer_cone_angle=0.6,
+        ),
+    ]
+    metal = g.Material(base_color=(0.8, 0.5, 0.3, 1.0), metallic=0.2, roughness=0.4)
+    threejs_lights: list[t.Light] = [
+        t.PointLight(color=(1.0, 0.9, 0.8), intensity=10.0, position=(1.0, 2.0, 1.0)),
+        t.DirectionalLight(intensity=1.5, position=(0.3, 0.5, 1.0)),
+        t.SpotLight(
+            color=(0.8, 0.9, 1.0),
+            intensity=15.0,
+            angle=0.6,
+            penumbra=0.5,
+            position=(0.0, 0.0, 2.0),
+            target=(0.0, 0.0, -3.0),
+        ),
+    ]
+    phong = t.MeshPhongMaterial(color=(0.8, 0.5, 0.3), shininess=32.0)
+    origin = (0.0, 0.0, 0.0)
+    return {
+        "gltf directional": g.Scene(gltf_lights[1:2], metal, camera_position=origin),
+        "gltf 3 lights": g.Scene(gltf_lights, metal, camera_position=origin),
+        "gltf 3 lights, ambient": g.Scene(
+            gltf_lights, metal, ambient_light=(0.1, 0.1, 0.1), camera_position=origin
+        ),
+        "threejs directional": t.Scene(threejs_lights[1:2], phong, camera_position=origin),
+        "threejs 3 lights": t.Scene(threejs_lights, phong, camera_position=origin),
+        "threejs 3 lights, ambient": t.Scene(
+            [*threejs_lights, t.AmbientLight(intensity=0.2)], phong, camera_position=origin
+        ),
+    }
+
+
+def shade_scenes() -> dict[str, AnyScene]:
+    """The scenes of ``bench shade`` by name: `bench_scenes`, `extra_bench_scenes`, then
+    `world_scenes`."""
+    return {**bench_scenes(), **extra_bench_scenes(), **world_scenes()}
 
 
 def scene_names(text: str) -> list[str]:
@@ -159,7 +217,7 @@ def scene_names(text: str) -> list[str]:
     text : str
         Comma-separated names of `shade_scenes` (a name's own comma is kept: ``1 point, local
         viewer,8 mixed`` is two) or groups: ``bench`` (the three of `bench_scenes`), ``extra``
-        (`extra_bench_scenes`) and ``all``.
+        (`extra_bench_scenes`), ``gl`` (the two), ``world`` (`world_scenes`) and ``all``.
 
     Returns
     -------
@@ -171,19 +229,22 @@ def scene_names(text: str) -> list[str]:
     ValueError
         For a name that is neither a scene nor a group, or an empty list.
     """
-    bench, extra = list(bench_scenes()), list(extra_bench_scenes())
-    groups = {"bench": bench, "extra": extra, "all": bench + extra}
+    bench, extra, world = list(bench_scenes()), list(extra_bench_scenes()), list(world_scenes())
+    groups = {
+        "bench": bench, "extra": extra, "gl": bench + extra, "world": world,
+        "all": bench + extra + world,
+    }  # fmt: skip
     names: list[str] = []
     pending = ""
     for piece in text.split(","):
         # A piece that names nothing may be the first half of a name with a comma.
         pending = f"{pending},{piece}" if pending else piece
         name = pending.strip()
-        if name in groups or name in bench + extra:
+        if name in groups or name in bench + extra + world:
             names += [s for s in groups.get(name, [name]) if s not in names]
             pending = ""
     if pending.strip() or not names:
-        known = ", ".join(f'"{name}"' for name in [*groups, *bench, *extra])
+        known = ", ".join(f'"{name}"' for name in [*groups, *bench, *extra, *world])
         raise ValueError(f"no scene {pending.strip()!r}: the scenes are {known}")
     return names
 
