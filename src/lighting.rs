@@ -13,9 +13,10 @@
 //! | [`mesh_phong`] | [`crate::threejs`] | three.js' `MeshPhongMaterial` as release 111's shader evaluates it |
 //!
 //! The two world models share one path ([`world`]); what only GL has (shape kernels, the
-//! modelview, accuracy tiers, two-sided colour planes) stays in [`fixed_function`]. Shared by
-//! several models: the accuracy option ([`accuracy`]), the clamp option ([`clamp`]), the transform of positions and normals
-//! ([`transform`]) and per-call values rounded to the kernel's type ([`round`]).
+//! modelview, two-sided colour planes) stays in [`fixed_function`]. Shared by several models:
+//! the accuracy option ([`accuracy`]), the clamp option ([`clamp`]), the transform of
+//! positions and normals ([`transform`]) and per-call values rounded to the kernel's type
+//! ([`round`]); three.js' specular power is GL's (`fixed_function::power::cos_pow`).
 //!
 //! Uses [`crate::threejs`], [`crate::gltf`], [`crate::gl`], [`crate::numbers`],
 //! [`crate::simd`], [`crate::memory`] and [`crate::errors`].

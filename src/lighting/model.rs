@@ -3,8 +3,8 @@
 //! A model is its scene type (the state folder's checked scene: GL's, glTF's or three.js') and
 //! the options of a call besides the arrays. What every model shares is here: how many colour
 //! planes a call writes, how much work a vertex is, how a call's rows are lit and the line
-//! that says what is computed. What only one model has (GL's shape kernels, its modelview and
-//! accuracy tiers, the world models' model matrix) lives in its own folder, behind
+//! that says what is computed. What only one model has (GL's shape kernels and its modelview, the
+//! world models' model matrix) lives in its own folder, behind
 //! [`Model::shade_rows`] and [`Model::describe`].
 //!
 //! | state (`crate::…`) | model (`crate::lighting::…`) | Python |

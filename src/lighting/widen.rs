@@ -1,5 +1,5 @@
 //! Float64 widening: a call on `f32` arrays computed in `f64` (the arrays widened, the result
-//! rounded once), for GL's `"exact"` accuracy and the world models, which compute in `f64`.
+//! rounded once), for every model's `"exact"` accuracy.
 
 use std::mem::MaybeUninit;
 
@@ -36,7 +36,7 @@ fn widened<X: Copy, Y>(
 
 /// `compute` over the arrays of `inputs` widened to `f64` (positions only when
 /// `read_positions`: unread, they are not copied), its `f64` result rounded once into `out`,
-/// saturated at `T::MAX`: the arithmetic of GL's `"exact"` accuracy and of the world models for `f32` arrays.
+/// saturated at `T::MAX`: the arithmetic of every model's `"exact"` accuracy on `f32` arrays.
 ///
 /// # Errors
 /// A memory error for the widened copies, [`Error::interrupted`], or those of `compute`.
