@@ -31,6 +31,7 @@ from glshade.lab.scenes import (
 )
 from glshade.lab.timing import Timing, ratio, time_calibrated, time_rounds
 from glshade.lab.world_peers import drjit_world, numba_world
+from support import gltf_reference, threejs_reference
 
 pytestmark = pytest.mark.lab
 
@@ -104,6 +105,20 @@ def test_the_world_peers_are_the_models(name: str, peer: str) -> None:
     atol = 5e-5 if name.startswith("gltf") else 4e-6
     np.testing.assert_allclose(got[smooth], reference[smooth], rtol=0, atol=atol)
     assert (reference[:, :3] > 0.02).mean() > 0.8
+
+
+@pytest.mark.parametrize("name", WORLD)
+def test_glshade_is_within_its_fast_bound_on_the_benchs_world_scenes(name: str) -> None:
+    """The fast mode's error on the bench's vertices (every one, grazing views included) is
+    within the bound the Accuracy page states, written in float64 in the tests' support."""
+    scene = WORLD[name]
+    p, n = bench_vertices(4_000)
+    fast = gs.shade(p, n, scene, clamp=False)
+    exact = gs.shade(p.astype(np.float64), n.astype(np.float64), scene, clamp=False)
+    bound = (gltf_reference if name.startswith("gltf") else threejs_reference).fast_bound(
+        p.astype(np.float64), n.astype(np.float64), scene
+    )
+    assert (np.abs(fast[:, :3] - exact[:, :3]) <= bound).all()
 
 
 def test_the_world_peers_take_only_the_lights_they_model() -> None:
