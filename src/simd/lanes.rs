@@ -456,8 +456,8 @@ pub fn normalize_and_length_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V) {
 }
 
 /// [`normalize_and_length_fast`] with the reciprocal of the length too: the unit vector, |v|
-/// and 1/|v| (∞ for a zero `v`, 0 for an infinite one), from the one division the unit vector
-/// takes, for a light's falloff in 1/d.
+/// and 1/|v| (∞ for a zero `v`, NaN for a non-finite one), from the one division the unit
+/// vector takes, for a light's falloff in 1/d.
 #[inline(always)]
 pub fn normalize_and_lengths_fast<V: Lanes>(v: V3<V>) -> (V3<V>, V, V) {
     let len2 = v.dot(v);
