@@ -133,8 +133,11 @@ pub mod light_source {
 }
 pub use numbers::real::Real;
 pub use render::camera::{look_at, orthographic, perspective, Camera};
-pub use render::mesh::Mesh;
+pub use render::mesh::{Draw, Mesh, Textured};
 pub use render::options::{Provoking, RenderOptions, Shading};
+pub use render::placement::Placement;
 pub use render::raster::{Cull, Viewport};
-pub use render::render;
 pub use render::shader::RenderModel;
+pub use render::texture::{Filter, Texels, Texture, Wrap};
+pub use render::transfer::Transfer;
+pub use render::{render, render_draws};

@@ -36,7 +36,7 @@ mod _glshade {
     #[pymodule_export]
     use super::relief::{blend, hillshade, shade_normals};
     #[pymodule_export]
-    use super::render::render;
+    use super::render::{render, render_draws};
     #[pymodule_export]
     use super::scene::{Lights, Material, Scene};
     #[pymodule_export]

@@ -1,23 +1,30 @@
-//! Rendering a triangle mesh with flat, Gouraud or Phong shading: GL 2.1's pipeline (§2.11–3.5)
+//! Rendering triangle meshes with flat, Gouraud or Phong shading: GL 2.1's pipeline (§2.11–3.5)
 //! around the one lighting equation. Vertices go to clip coordinates, faces are clipped
 //! ([`clip`]) and set up ([`raster`]), the nearest triangle is found at every pixel
-//! ([`visibility`]), and the visible pixels are lit ([`passes`]).
+//! ([`visibility`]), and the visible pixels are lit ([`passes`]). A frame holds one mesh
+//! ([`render`]) or several, each with its own model matrix, scene and culling
+//! ([`render_draws`]), depth-tested together as GL draws them one after another.
 //!
 //! The render layer, top of the core: besides those four, [`camera`] (view and projection),
-//! [`mesh`] (what is drawn), [`options`] (how) and [`shader`] (the model of the scene, placed
-//! for the camera: GL's, glTF's or three.js'). Uses
+//! [`mesh`] (what is drawn), [`options`] (how), [`shader`] (the model of the scene, placed
+//! for the camera: GL's, glTF's or three.js'), [`frame`] (the visible pixels) and [`layer`]
+//! (one mesh of a frame, lit). Uses
 //! every layer below it: [`crate::normals`], [`crate::lighting`], [`crate::gl`],
 //! [`crate::gltf`], [`crate::threejs`], [`crate::numbers`], [`crate::simd`], [`crate::memory`]
 //! and [`crate::errors`].
 
 pub mod camera;
 pub mod clip;
+pub mod frame;
+pub mod layer;
 pub mod mesh;
 pub mod options;
 pub mod passes;
+pub mod placement;
 pub mod raster;
 pub mod shader;
 pub mod texture;
+pub mod transfer;
 pub mod visibility;
 
 use glam::{DMat4, DVec4};
@@ -26,17 +33,21 @@ use rayon::prelude::*;
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
 use crate::gl::vertex_colors::VertexColors;
-use crate::memory::alloc::{count, try_par_collect, try_reserve, try_with_capacity};
+use crate::lighting::clamp::ColorClamp;
+use crate::memory::alloc::{count, try_collect, try_par_collect, try_reserve, try_with_capacity};
 use crate::memory::pages::Zeroed;
 use crate::normals::adjacency::index;
-use crate::normals::{check_faces, vertex_normals, Weighting};
+use crate::normals::{check_faces, face_normals, vertex_normals, Weighting};
 use crate::numbers::real::Real;
 use crate::render::camera::{check_affine, Camera};
 use crate::render::clip::clip_triangle;
-use crate::render::mesh::Mesh;
+use crate::render::frame::Frame;
+use crate::render::layer::Layer;
+use crate::render::mesh::{Draw, Mesh};
 use crate::render::options::{RenderOptions, Shading};
-use crate::render::passes::{Frame, Pass};
-use crate::render::raster::{Cull, Triangle, Viewport};
+use crate::render::passes::Pass;
+use crate::render::placement::{place, Placement};
+use crate::render::raster::{Triangle, Viewport};
 use crate::render::shader::{RenderModel, Shader};
 use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 
@@ -45,9 +56,8 @@ use crate::render::visibility::{visibility, Triangles, CHUNK_BITS, MAX_CHUNKS};
 const FACES_PER_TASK: usize = 4096;
 const _: () = assert!(7 * FACES_PER_TASK < 1 << CHUNK_BITS);
 
-/// Checks the arguments of [`render`] that the lighting equation does not check itself.
-fn validate<T: Real>(
-    mesh: &Mesh<'_, T>,
+/// Checks the frame's arguments of [`render_draws`]: the sizes, the camera and the background.
+fn validate_frame(
     camera: &Camera,
     options: &RenderOptions,
     pixels: usize,
@@ -63,22 +73,21 @@ fn validate<T: Real>(
         )));
     }
     camera.validate()?;
-    check_affine(&options.model, "model")?;
     if !options.background.iter().all(|c| c.is_finite()) {
         return Err(Error::value(format!(
             "background must be finite, got {:?}",
             options.background
         )));
     }
+    Ok(())
+}
+
+/// Checks a draw's mesh and model matrix, and what its model takes.
+fn validate<T: Real, M: RenderModel>(draw: &Draw<'_, T, M>, shading: Shading) -> Result<(), Error> {
+    let mesh = &draw.mesh;
+    check_affine(&draw.model, "model")?;
     check_faces(mesh.faces, mesh.vertices.len())?;
-    let most = MAX_CHUNKS * FACES_PER_TASK;
-    if mesh.faces.len() > most {
-        return Err(Error::value(format!(
-            "faces must number at most {most}, got {}",
-            mesh.faces.len()
-        )));
-    }
-    let (rows, what) = match options.shading {
+    let (rows, what) = match shading {
         Shading::Flat => (mesh.faces.len(), "one per face for flat shading"),
         _ => (mesh.vertices.len(), "one per vertex"),
     };
@@ -109,45 +118,92 @@ fn validate<T: Real>(
             )));
         }
     }
+    if let Some(takes) = M::COLORS_OR_TEXTURE {
+        if mesh.textured.is_some() && mesh.colors.is_some() {
+            return Err(Error::value(format!("{takes}, not both")));
+        }
+    }
     Ok(())
 }
 
-/// The triangles to rasterise, face by face in order, after clipping and culling; `stop` is
-/// polled per task of [`FACES_PER_TASK`] faces.
+/// The frame's index of each draw's first face, and the total; a value error when the frame
+/// has more faces, or more chunks of them, than triangle ids can number.
+fn first_faces<T, M>(draws: &[Draw<'_, T, M>]) -> Result<(Vec<u32>, usize), Error> {
+    let (mut total, mut chunks) = (0_usize, 0_usize);
+    let mut firsts = try_with_capacity(draws.len(), "the first faces")?;
+    for draw in draws {
+        #[allow(clippy::cast_possible_truncation)] // below MAX_CHUNKS · FACES_PER_TASK < 2^32
+        firsts.push(total as u32);
+        total = total.saturating_add(draw.mesh.faces.len());
+        chunks = chunks.saturating_add(draw.mesh.faces.len().div_ceil(FACES_PER_TASK));
+    }
+    let most = MAX_CHUNKS * FACES_PER_TASK;
+    if total > most {
+        return Err(Error::value(format!(
+            "faces must number at most {most}, got {total}"
+        )));
+    }
+    if chunks > MAX_CHUNKS {
+        return Err(Error::value(format!(
+            "the meshes' faces must fill at most {MAX_CHUNKS} chunks of {FACES_PER_TASK} \
+             faces (each mesh's own), got {chunks}"
+        )));
+    }
+    Ok((firsts, total))
+}
+
+/// The triangles to rasterise, draw by draw and face by face in order, after clipping and
+/// culling; `stop` is polled per task of [`FACES_PER_TASK`] faces.
 ///
 /// # Errors
 /// A memory error for the clip coordinates or the triangles, or [`Error::interrupted`].
-fn setup<T: Real>(
-    mesh: &Mesh<'_, T>,
-    to_clip: DMat4,
+fn setup<T: Real, M: Sync>(
+    draws: &[Draw<'_, T, M>],
+    first_faces: &[u32],
+    camera: &Camera,
     viewport: Viewport,
-    cull: Cull,
     stop: &Stop,
 ) -> Result<Triangles, Error> {
-    let clip: Vec<DVec4> = try_par_collect(
-        mesh.vertices
-            .par_iter()
-            .map(|v| to_clip * DVec4::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64(), 1.0)),
-        "the clip coordinates",
-    )?;
+    let clips = draws
+        .iter()
+        .map(|draw| {
+            let to_clip = camera.projection * camera.view * draw.model;
+            try_par_collect(
+                draw.mesh.vertices.par_iter().map(|v| {
+                    to_clip * DVec4::new(v[0].to_f64(), v[1].to_f64(), v[2].to_f64(), 1.0)
+                }),
+                "the clip coordinates",
+            )
+        })
+        .collect::<Result<Vec<Vec<DVec4>>, _>>()?;
+    // Every draw's chunks of faces, in order: the tasks run in parallel across draws.
+    let chunks = draws
+        .iter()
+        .map(|d| d.mesh.faces.len().div_ceil(FACES_PER_TASK));
+    let mut tasks = try_with_capacity(chunks.clone().sum(), "the triangle tasks")?;
+    for (d, count) in chunks.enumerate() {
+        tasks.extend((0..count).map(|c| (d, c)));
+    }
     let results = try_par_collect(
-        mesh.faces
-            .par_chunks(FACES_PER_TASK)
-            .enumerate()
-            .map(|(chunk, faces)| {
-                stop.check()?;
-                let mut out = try_with_capacity(faces.len(), "the triangles")?;
-                for (k, face) in faces.iter().enumerate() {
-                    // Clipping makes at most seven triangles of a face: room first, then no
-                    // allocation in `extend`.
-                    try_reserve(&mut out, 7, "the triangles")?;
-                    let face_index = (chunk * FACES_PER_TASK + k) as u32;
-                    clip_triangle(face.map(|i| clip[index(i)]), |corners| {
-                        out.extend(Triangle::new(face_index, corners, viewport, cull));
-                    });
-                }
-                Ok(out)
-            }),
+        tasks.par_iter().map(|&(d, chunk)| {
+            stop.check()?;
+            let (draw, clip) = (&draws[d], &clips[d]);
+            let start = chunk * FACES_PER_TASK;
+            let faces =
+                &draw.mesh.faces[start..(start + FACES_PER_TASK).min(draw.mesh.faces.len())];
+            let mut out = try_with_capacity(faces.len(), "the triangles")?;
+            for (k, face) in faces.iter().enumerate() {
+                // Clipping makes at most seven triangles of a face: room first, then no
+                // allocation in `extend`.
+                try_reserve(&mut out, 7, "the triangles")?;
+                #[allow(clippy::cast_possible_truncation)] // checked by `first_faces`
+                let face_index = first_faces[d] + (start + k) as u32;
+                clip_triangle(face.map(|i| clip[index(i)]), |corners| {
+                    out.extend(Triangle::new(face_index, corners, viewport, draw.cull));
+                });
+            }
+            Ok(out)
+        }),
         "the triangle chunks",
     )?;
     let mut chunks = try_with_capacity(results.len(), "the triangle chunks")?;
@@ -189,61 +245,143 @@ pub fn render<T: Real, M: RenderModel>(
     depth: &mut [T],
     stop: &Stop,
 ) -> Result<(), Error> {
-    validate(mesh, camera, options, image.len(), depth.len())?;
-    if let Some(takes) = M::COLORS_OR_TEXTURE {
-        if mesh.textured.is_some() && mesh.colors.is_some() {
-            return Err(Error::value(format!("{takes}, not both")));
-        }
-    }
-    let shader = Shader::new(scene, camera, options, mesh.textured.is_some())?;
-    draw(shader, mesh, camera, options, image, depth, stop)
+    let draw = Draw {
+        mesh: *mesh,
+        scene,
+        model: options.model,
+        cull: options.cull,
+        placement: Placement::Model,
+    };
+    render_draws(&[draw], camera, options, image, depth, stop)
 }
 
-/// The pipeline of [`render`] after validation, lit by `shader`.
-fn draw<T: Real, M: RenderModel>(
-    shader: Shader<'_, M>,
-    mesh: &Mesh<'_, T>,
+/// Renders `draws` into one frame as [`render`] renders one mesh: every draw's triangles
+/// depth-tested together in the order given (the first drawn wins a tie, as GL's `GL_LESS`),
+/// each placed by its own model matrix, lit by its own scene and culled by its own rule
+/// (`options.model` and `options.cull` are not read); the other options are the frame's.
+///
+/// # Errors
+/// Those of [`render`], a mesh's prefixed with its index in `draws` when there are several;
+/// a value error when the draws have more faces than triangle ids can number.
+pub fn render_draws<T: Real, M: RenderModel>(
+    draws: &[Draw<'_, T, M>],
     camera: &Camera,
     options: &RenderOptions,
     image: &mut [T],
     depth: &mut [T],
     stop: &Stop,
 ) -> Result<(), Error> {
-    // A call on no vertices checks the options against the scene before any work is done.
-    let no_colors = mesh.colors.map(|c| VertexColors {
-        data: &c.data[..0],
-        width: c.width,
-    });
-    shader.shade::<T>(&[], &[], no_colors, &mut [], stop)?;
-
+    validate_frame(camera, options, image.len(), depth.len())?;
+    let named = |d: usize| {
+        move |mut e: Error| {
+            if draws.len() > 1 {
+                e.message = format!("draws[{d}]: {}", e.message).into();
+            }
+            e
+        }
+    };
+    let (firsts, _) = first_faces(draws)?;
+    let mut shaders = try_with_capacity(draws.len(), "the shaders")?;
+    for (d, draw) in draws.iter().enumerate() {
+        validate(draw, options.shading).map_err(named(d))?;
+        let placed = RenderOptions {
+            model: match draw.placement {
+                Placement::Model => draw.model,
+                Placement::Vertices => DMat4::IDENTITY,
+            },
+            cull: draw.cull,
+            ..*options
+        };
+        let shader = Shader::new(draw.scene, camera, &placed, draw.mesh.textured.is_some())
+            .map_err(named(d))?;
+        // A call on no vertices checks the options against the scene before any work is done.
+        let no_colors = draw.mesh.colors.map(|c| VertexColors {
+            data: &c.data[..0],
+            width: c.width,
+        });
+        shader
+            .shade::<T>(&[], &[], no_colors, &mut [], stop)
+            .map_err(named(d))?;
+        shaders.push(shader);
+    }
+    let placed = draws
+        .iter()
+        .map(|draw| match draw.placement {
+            Placement::Model => Ok(None),
+            Placement::Vertices => place(&draw.mesh, draw.model, stop).map(Some),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let placed_draws = draws
+        .iter()
+        .zip(&placed)
+        .map(|(draw, placed)| match placed {
+            None => *draw,
+            Some(p) => Draw {
+                mesh: Mesh {
+                    vertices: &p.vertices,
+                    normals: p.normals.as_deref(),
+                    ..draw.mesh
+                },
+                model: DMat4::IDENTITY,
+                placement: Placement::Model,
+                ..*draw
+            },
+        });
+    let draws = try_collect(placed_draws, "the placed draws")?;
+    let draws = &draws[..];
     let viewport = options.viewport;
-    let to_clip = camera.projection * camera.view * options.model;
-    let triangles = setup(mesh, to_clip, viewport, options.cull, stop)?;
+    let triangles = setup(draws, &firsts, camera, viewport, stop)?;
     // Zeroed: a large buffer is mapped, not written; visibility clears it band by band.
     let mut ids = Zeroed::<u32>::new(viewport.width * viewport.height, "the triangle ids")?;
     visibility(&triangles, viewport, &mut ids, depth, stop)?;
+    let computed = draws
+        .iter()
+        .map(|draw| normals_of(&draw.mesh, options.shading, stop))
+        .collect::<Result<Vec<_>, _>>()?;
+    let layers = draws.iter().zip(shaders).zip(&computed).zip(firsts).map(
+        |(((draw, shader), computed), first_face)| Layer {
+            shader,
+            mesh: &draw.mesh,
+            normals: draw.mesh.normals.or(computed.as_deref()).unwrap_or(&[]),
+            first_face,
+        },
+    );
+    let layers = try_collect(layers, "the layers")?;
     let pass = Pass {
-        shader,
-        mesh,
+        layers: &layers,
         frame: Frame::new(viewport, &triangles, &ids)?,
         background: options.background,
+        transfer: options.transfer,
+        clamp: options.clamp == ColorClamp::On,
     };
-    if options.shading == Shading::Flat {
-        return pass.flat(options.provoking, image, stop);
+    match options.shading {
+        Shading::Flat => pass.flat(options.provoking, image, stop),
+        Shading::Gouraud => pass.gouraud(image, stop),
+        Shading::Phong => pass.phong(image, stop),
     }
-    let computed;
-    let normals = if let Some(n) = mesh.normals {
-        n
+}
+
+/// The normals `mesh` lacks for `shading`: its face normals for flat shading, its
+/// angle-weighted vertex normals otherwise; `None` when it has its own.
+///
+/// # Errors
+/// A memory error for the normals, or [`Error::interrupted`].
+fn normals_of<T: Real>(
+    mesh: &Mesh<'_, T>,
+    shading: Shading,
+    stop: &Stop,
+) -> Result<Option<Zeroed<[T; 3]>>, Error> {
+    if mesh.normals.is_some() {
+        return Ok(None);
+    }
+    if shading == Shading::Flat {
+        let mut n = Zeroed::<[T; 3]>::new(mesh.faces.len(), "the face normals")?;
+        face_normals(mesh.vertices, mesh.faces, &mut n, stop)?;
+        Ok(Some(n))
     } else {
         let mut n = Zeroed::<[T; 3]>::new(mesh.vertices.len(), "the vertex normals")?;
         vertex_normals(mesh.vertices, mesh.faces, Weighting::Angle, &mut n, stop)?;
-        computed = n;
-        &computed
-    };
-    if options.shading == Shading::Gouraud {
-        pass.gouraud(normals, image, stop)
-    } else {
-        pass.phong(normals, image, stop)
+        Ok(Some(n))
     }
 }
 
@@ -253,6 +391,7 @@ mod tests {
     use crate::gl::material::Material;
     use crate::gl::scene::Scene;
     use crate::render::options::Provoking;
+    use crate::render::raster::Cull;
 
     fn emission_scene() -> Scene {
         Scene {
@@ -361,37 +500,54 @@ mod tests {
                 height: 5,
             },
         );
-        let to_clip = DMat4::IDENTITY;
-        let triangles = setup(&quad(), to_clip, viewport, Cull::None, &stop).unwrap();
+        let camera = Camera {
+            view: DMat4::IDENTITY,
+            projection: DMat4::IDENTITY,
+        };
+        let scene = emission_scene().validated().unwrap();
+        let quad = quad();
+        let draws = [Draw {
+            mesh: quad,
+            scene: &scene,
+            model: DMat4::IDENTITY,
+            cull: Cull::None,
+            placement: Placement::Model,
+        }];
+        let triangles = setup(&draws, &[0], &camera, viewport, &stop).unwrap();
         let mut ids = vec![0; 35];
         let mut depth = vec![0.0_f64; 35];
         visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap();
         stop.request();
         let interrupted = |e: Error| e.kind == crate::errors::error::ErrorKind::Interrupted;
         assert!(interrupted(
-            setup(&quad(), to_clip, viewport, Cull::None, &stop).unwrap_err()
+            setup(&draws, &[0], &camera, viewport, &stop).unwrap_err()
         ));
         let err = visibility(&triangles, viewport, &mut ids, &mut depth, &stop).unwrap_err();
         assert!(interrupted(err));
-        let scene = emission_scene().validated().unwrap();
-        let camera = Camera::default();
-        let pass = Pass {
-            shader: Shader::new(&scene, &camera, &RenderOptions::default(), false).unwrap(),
-            mesh: &quad(),
-            frame: Frame::new(viewport, &triangles, &ids).unwrap(),
-            background: [0.0; 4],
-        };
-        let normals = [[0.0, 0.0, 1.0]; 4];
         let mut image = vec![0.0; 35 * 4];
-        assert!(interrupted(
-            pass.flat(Provoking::Last, &mut image, &stop).unwrap_err()
-        ));
-        assert!(interrupted(
-            pass.gouraud(&normals, &mut image, &stop).unwrap_err()
-        ));
-        assert!(interrupted(
-            pass.phong(&normals, &mut image, &stop).unwrap_err()
-        ));
+        // One normal per vertex, or per face for flat shading.
+        for normals in [&[[0.0, 0.0, 1.0]; 4][..], &[[0.0, 0.0, 1.0]; 2]] {
+            let layers = [Layer {
+                shader: Shader::new(&scene, &camera, &RenderOptions::default(), false).unwrap(),
+                mesh: &quad,
+                normals,
+                first_face: 0,
+            }];
+            let pass = Pass {
+                layers: &layers,
+                frame: Frame::new(viewport, &triangles, &ids).unwrap(),
+                background: [0.0; 4],
+                transfer: crate::render::transfer::Transfer::Linear,
+                clamp: true,
+            };
+            let err = if normals.len() == 2 {
+                pass.flat(Provoking::Last, &mut image, &stop).unwrap_err()
+            } else {
+                assert!(interrupted(pass.gouraud(&mut image, &stop).unwrap_err()));
+                pass.phong(&mut image, &stop).unwrap_err()
+            };
+            assert!(interrupted(err));
+        }
     }
 
     #[test]
@@ -477,5 +633,198 @@ mod tests {
         let (one, three) = (run(1), run(3));
         assert!(one.1.iter().any(|&z| z < 1.0));
         assert_eq!(one, three);
+    }
+
+    /// `draws` rendered at 61 x 47, with `shading`.
+    fn draw_all(
+        draws: &[Draw<'_, f64, crate::gl::scene::ValidScene>],
+        shading: Shading,
+    ) -> Result<(Vec<f64>, Vec<f64>), Error> {
+        let options = RenderOptions {
+            viewport: Viewport {
+                width: 61,
+                height: 47,
+            },
+            shading,
+            ..RenderOptions::default()
+        };
+        let mut image = vec![0.0; 61 * 47 * 4];
+        let mut depth = vec![0.0; 61 * 47];
+        let camera = Camera::default();
+        render_draws(
+            draws,
+            &camera,
+            &options,
+            &mut image,
+            &mut depth,
+            &Stop::new(),
+        )?;
+        Ok((image, depth))
+    }
+
+    /// A fan of triangles around the z axis, tilted, at depth offset `z`.
+    fn fan(z: f64) -> (Vec<[f64; 3]>, Vec<[i64; 3]>) {
+        let mut vertices = vec![[0.1, -0.05, z]];
+        vertices.extend((0..13).map(|i| {
+            let t = f64::from(i) * 0.5;
+            [0.8 * t.cos(), 0.7 * t.sin(), z + 0.3 * t.sin()]
+        }));
+        let faces = (1..13).map(|i| [0, i, i + 1]).collect();
+        (vertices, faces)
+    }
+
+    #[test]
+    fn several_draws_render_as_their_meshes_merged() {
+        let scene = Scene {
+            lights: vec![crate::gl::light::Light {
+                position: [0.3, 0.5, 1.0, 0.0],
+                ..crate::gl::light::Light::default()
+            }],
+            ..Scene::default()
+        }
+        .validated()
+        .unwrap();
+        let (a, fa) = fan(0.1);
+        let (b, fb) = fan(-0.2);
+        let shifted: Vec<[f64; 3]> = b.iter().map(|v| [v[0] + 0.3, v[1] - 0.2, v[2]]).collect();
+        let mesh = |vertices, faces| Mesh {
+            vertices,
+            faces,
+            normals: None,
+            colors: None,
+            textured: None,
+        };
+        let model = DMat4::from_translation(glam::DVec3::new(0.3, -0.2, 0.0));
+        let draws = [
+            Draw {
+                mesh: mesh(&a, &fa),
+                scene: &scene,
+                model: DMat4::IDENTITY,
+                cull: Cull::None,
+                placement: Placement::Model,
+            },
+            Draw {
+                mesh: mesh(&b, &fb),
+                scene: &scene,
+                model,
+                cull: Cull::None,
+                placement: Placement::Model,
+            },
+        ];
+        let mut merged = a.clone();
+        merged.extend(&shifted);
+        let offset = i64::try_from(a.len()).unwrap();
+        let mut faces = fa.clone();
+        faces.extend(fb.iter().map(|f| f.map(|i| i + offset)));
+        let lone = [Draw {
+            mesh: mesh(&merged, &faces),
+            ..draws[0]
+        }];
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let (image, depth) = draw_all(&draws, shading).unwrap();
+            let (expected_image, expected_depth) = draw_all(&lone, shading).unwrap();
+            assert!(
+                depth.iter().filter(|&&z| z < 1.0).count() > 300,
+                "{shading:?}"
+            );
+            // The model matrix moves the second fan in clip space rather than in its
+            // vertices: depths and colours agree to rounding.
+            for (x, y) in depth.iter().zip(&expected_depth) {
+                assert!((x - y).abs() < 1e-12, "{shading:?}: {x} {y}");
+            }
+            for (x, y) in image.iter().zip(&expected_image) {
+                assert!((x - y).abs() < 1e-12, "{shading:?}: {x} {y}");
+            }
+        }
+    }
+
+    #[test]
+    fn each_draw_is_lit_by_its_own_scene_and_the_first_drawn_wins_a_tie() {
+        let red = Scene {
+            material: Material {
+                emission: [1.0, 0.0, 0.0, 1.0],
+                ..emission_scene().material
+            },
+            ..emission_scene()
+        }
+        .validated()
+        .unwrap();
+        let blue = Scene {
+            material: Material {
+                emission: [0.0, 0.0, 1.0, 1.0],
+                ..emission_scene().material
+            },
+            ..emission_scene()
+        }
+        .validated()
+        .unwrap();
+        let quad = quad();
+        // The default camera's identity projection: a larger z is deeper.
+        let (front, back) = (
+            DMat4::IDENTITY,
+            DMat4::from_translation(glam::DVec3::Z * 0.1),
+        );
+        let at = |scene, model, cull| Draw {
+            mesh: quad,
+            scene,
+            model,
+            cull,
+            placement: Placement::Model,
+        };
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let tie = draw_all(
+                &[at(&red, front, Cull::None), at(&blue, front, Cull::None)],
+                shading,
+            );
+            assert!(tie.unwrap().0.chunks(4).all(|p| p == [1.0, 0.0, 0.0, 1.0]));
+            let nearer = draw_all(
+                &[at(&red, back, Cull::None), at(&blue, front, Cull::None)],
+                shading,
+            );
+            assert!(nearer
+                .unwrap()
+                .0
+                .chunks(4)
+                .all(|p| p == [0.0, 0.0, 1.0, 1.0]));
+            // The nearer quad culled by its own rule: the other shows.
+            let culled = draw_all(
+                &[at(&red, back, Cull::None), at(&blue, front, Cull::Front)],
+                shading,
+            );
+            assert!(culled
+                .unwrap()
+                .0
+                .chunks(4)
+                .all(|p| p == [1.0, 0.0, 0.0, 1.0]));
+        }
+    }
+
+    #[test]
+    fn a_bad_draw_is_named_by_its_index() {
+        let scene = emission_scene().validated().unwrap();
+        let quad = quad();
+        let faces = [[0, 1, 9]];
+        let good = Draw {
+            mesh: quad,
+            scene: &scene,
+            model: DMat4::IDENTITY,
+            cull: Cull::None,
+            placement: Placement::Model,
+        };
+        let bad = Draw {
+            mesh: Mesh {
+                faces: &faces,
+                ..quad
+            },
+            ..good
+        };
+        let err = draw_all(&[good, bad], Shading::Phong).unwrap_err();
+        assert!(err.message.starts_with("draws[1]: "), "{}", err.message);
+        let singular = Draw {
+            model: DMat4::ZERO,
+            ..good
+        };
+        let err = draw_all(&[singular], Shading::Phong).unwrap_err();
+        assert!(err.message.starts_with("model"), "{}", err.message);
     }
 }

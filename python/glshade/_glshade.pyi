@@ -22,6 +22,7 @@ __all__ = [
     "orthographic",
     "perspective",
     "render",
+    "render_draws",
     "shade",
     "shade_normals",
     "stream",
@@ -156,8 +157,9 @@ def render(
     colors: NDArray[np.floating[Any]] | None,
     cull: str,
     background: NDArray[np.float64],
+    transfer: str,
     clamp: bool,
-    texture: NDArray[np.float32] | None,
+    texture: NDArray[Any] | None,
     uv: NDArray[np.floating[Any]] | None,
     texture_filter: str,
     texture_wrap: tuple[str, str],
@@ -165,6 +167,34 @@ def render(
     color_material_face: str = "front_and_back",
     normalize: bool = True,
     rescale_normal: bool = False,
+) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...
+def render_draws(
+    draws: list[
+        tuple[
+            NDArray[np.floating[Any]],
+            NDArray[np.int64],
+            _AnyScene,
+            NDArray[np.float64],
+            str,
+            NDArray[np.floating[Any]] | None,
+            NDArray[np.floating[Any]] | None,
+            NDArray[Any] | None,
+            NDArray[np.floating[Any]] | None,
+            str,
+            tuple[str, str],
+        ]
+    ],
+    *,
+    view: NDArray[np.float64],
+    projection: NDArray[np.float64],
+    width: int,
+    height: int,
+    shading: str,
+    provoking_vertex: str,
+    background: NDArray[np.float64],
+    transfer: str,
+    clamp: bool,
+    placement: str = "model",
 ) -> tuple[NDArray[np.floating[Any]], NDArray[np.floating[Any]]]: ...
 
 @final

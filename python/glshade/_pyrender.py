@@ -2,10 +2,12 @@
 shaded as pyrender's stock ``mesh.frag`` shades them (glTF metallic-roughness, `glshade.gltf`),
 without importing pyrender.
 
-Every primitive is drawn by `render` with its material's `gltf.Scene` and the depths composited
-(nearest wins), as pyrender's depth test does. What pyrender's shader reads is reproduced: world
-positions ``M @ p``, world normals normalised per vertex before interpolation (its vertex
-shader's ``normalize(N * n)``), ``COLOR_0`` multiplying the result, back faces culled unless the
+Every primitive and instance is one draw of a single native call: all are rasterised into one
+depth-tested frame in pyrender's order (nearest wins, the first drawn on a tie, as GL's
+``GL_LESS``), each lit with its material's `gltf.Scene`. What pyrender's shader reads is
+reproduced: world positions ``M @ p``, world normals normalised per vertex before
+interpolation (its vertex shader's ``normalize(N * n)``; the native render's ``"vertices"``
+placement), ``COLOR_0`` multiplying the result, back faces culled unless the
 material is double-sided, and its emissive term ``emissiveFactor²``. Left out and refused with
 a clear error: textures other than the base colour's (metallic-roughness, normal, occlusion,
 emissive), the specular-glossiness material, primitives other than triangles or without
@@ -19,10 +21,10 @@ from typing import Any
 
 import numpy as np
 
-from . import gltf
-from ._camera import Camera
+from . import _glshade, gltf
 from ._image import Image
-from ._transfer import apply_transfer
+from ._intake import color_values, rows
+from ._texture import texels
 from ._typing import FloatArray
 
 __all__ = ["is_pyrender_scene", "render_pyrender"]
@@ -99,13 +101,14 @@ def _material(material: Any) -> gltf.Material:
     )
 
 
-def _texture(primitive: Any) -> dict[str, Any]:
-    """`render`'s texture arguments for a primitive's ``baseColorTexture``: its image (top row
-    first, as pyrender holds it before flipping it onto GL's rows), ``TEXCOORD_0``, and the
-    sampler's filter (pyrender magnifies with GL_LINEAR unless told otherwise) and wraps."""
+def _texture(primitive: Any) -> tuple[Any, Any, str, tuple[str, str]]:
+    """The texels, ``TEXCOORD_0``, filter and wraps of a primitive's ``baseColorTexture``
+    (Nones without one): its image (top row first, as pyrender holds it before flipping it onto
+    GL's rows), and the sampler's filter (pyrender magnifies with GL_LINEAR unless told
+    otherwise) and wraps."""
     texture = primitive.material.baseColorTexture
     if texture is None:
-        return {"texture": False}
+        return None, None, "linear", ("repeat", "repeat")
     if primitive.texcoord_0 is None:
         raise ValueError("the primitive has a baseColorTexture but no texcoord_0")
     if primitive.color_0 is not None:
@@ -114,56 +117,35 @@ def _texture(primitive: Any) -> dict[str, Any]:
         )
     sampler = texture.sampler
     magnify = getattr(sampler, "magFilter", None)
-    return {
-        "texture": texture.source,
-        "uv": np.asarray(primitive.texcoord_0, dtype=np.float64),
-        "texture_filter": FILTERS.get(magnify, "linear") if magnify is not None else "linear",
-        "texture_wrap": (
+    return (
+        texels(texture.source),
+        rows(primitive.texcoord_0, "texcoord_0", np.dtype(np.float64), (2,)),
+        FILTERS.get(magnify, "linear") if magnify is not None else "linear",
+        (
             WRAPS.get(getattr(sampler, "wrapS", 10497), "repeat"),
             WRAPS.get(getattr(sampler, "wrapT", 10497), "repeat"),
         ),
-    }
+    )
 
 
-def _world(primitive: Any, model: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """The primitive's positions and unit normals in world coordinates."""
+def _arrays(primitive: Any) -> tuple[FloatArray, FloatArray]:
+    """The primitive's positions and normals as float64 rows, in model coordinates."""
     if primitive.normals is None:
         raise NotImplementedError(
             "a primitive without normals (pyrender lights it with the view vector as its "
             "normal) is not rendered"
         )
-    p = np.asarray(primitive.positions, dtype=np.float64)
-    n = np.asarray(primitive.normals, dtype=np.float64)
-    world = p @ model[:3, :3].T + model[:3, 3]
-    normals = n @ np.linalg.inv(model[:3, :3])
-    length = np.linalg.norm(normals, axis=1, keepdims=True)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        unit = np.where(length > 0, normals / length, 0.0)
-    return world, unit
+    f64 = np.dtype(np.float64)
+    return rows(primitive.positions, "positions", f64), rows(primitive.normals, "normals", f64)
 
 
-def render_pyrender(
-    scene: Any,
-    *,
-    width: int,
-    height: int,
-    transfer: str,
-    clamp: bool,
-    depth: bool,
-    render: Any,
-) -> Image | tuple[Image, FloatArray]:
-    """The image pyrender's stock shaders make of `scene` (float64 RGBA, `transfer` applied
-    to the lit pixels, the scene's ``bg_color`` elsewhere), and its depth with `depth`;
-    `render` is `glshade.render`."""
-    if scene.main_camera_node is None:
-        raise ValueError("the pyrender scene has no camera (scene.main_camera_node is None)")
-    cam_node = scene.main_camera_node
-    view = np.linalg.inv(scene.get_pose(cam_node))
-    camera = Camera(view, cam_node.camera.get_projection_matrix(width, height))
+def _draws(scene: Any) -> list[tuple[Any, ...]]:
+    """The draws of `render_draws` for every visible primitive and instance of `scene`, in
+    pyrender's order, each placed by its node's pose times its instance's."""
     lights = _lights(scene)
     ambient = tuple(float(a) for a in np.asarray(scene.ambient_light, dtype=np.float64)[:3])
-    image = np.zeros((height, width, 4))
-    nearest = np.ones((height, width))
+    identity = np.eye(4)
+    draws: list[tuple[Any, ...]] = []
     for node in scene.mesh_nodes:
         if not node.mesh.is_visible:
             continue
@@ -174,25 +156,47 @@ def render_pyrender(
                     f"glshade renders triangles only, got a primitive of mode {primitive.mode}"
                 )
             lit = gltf.Scene(lights, _material(primitive.material), ambient_light=ambient)
-            cull = None if primitive.material.doubleSided else "back"
+            cull = "none" if primitive.material.doubleSided else "back"
             if primitive.indices is None:
                 faces = np.arange(len(primitive.positions)).reshape(-1, 3)
             else:  # pyrender keeps indices as float32 (whole numbers, as GL draws them)
                 faces = np.asarray(primitive.indices).astype(np.int64)
-            instances = [np.eye(4)] if primitive.poses is None else primitive.poses
+            colors = primitive.color_0
+            if colors is not None:
+                colors = rows(
+                    color_values(np.asarray(colors)), "color_0", np.dtype(np.float64), (3, 4)
+                )
+            texture, uv, filter_, wrap = _texture(primitive)
+            v, n = _arrays(primitive)
+            instances = [identity] if primitive.poses is None else primitive.poses
             for instance in instances:
-                v, n = _world(primitive, pose @ instance)
-                colors = primitive.color_0
-                drawn, z = render(
-                    v, faces, lit, camera, width=width, height=height, shading="phong",
-                    normals=n, colors=False if colors is None else colors, cull=cull,
-                    transfer="linear", clamp=clamp, depth=True, **_texture(primitive),
-                )  # fmt: skip
-                nearer = z < nearest
-                image[nearer] = drawn[nearer]
-                nearest[nearer] = z[nearer]
-    covered = nearest < 1
-    encoded = apply_transfer(image, transfer)
+                model = np.ascontiguousarray(pose @ instance, dtype=np.float64)
+                draws.append(
+                    (v, faces, lit._native, model, cull, n, colors, texture, uv, filter_, wrap)
+                )
+    return draws
+
+
+def render_pyrender(
+    scene: Any, *, width: int, height: int, transfer: str, clamp: bool, depth: bool
+) -> Image | tuple[Image, FloatArray]:
+    """The image pyrender's stock shaders make of `scene` (float64 RGBA, `transfer` applied
+    to the lit pixels, the scene's ``bg_color`` elsewhere), and its depth with `depth`."""
+    if scene.main_camera_node is None:
+        raise ValueError("the pyrender scene has no camera (scene.main_camera_node is None)")
+    cam_node = scene.main_camera_node
+    view = np.linalg.inv(scene.get_pose(cam_node))
+    projection = cam_node.camera.get_projection_matrix(width, height)
     background = np.asarray(scene.bg_color, dtype=np.float64)
-    result = Image(np.where(covered[..., None], encoded, background))
+    draws = _draws(scene)
+    if not draws:
+        nothing = Image(np.broadcast_to(background, (height, width, 4)).copy())
+        return (nothing, np.ones((height, width))) if depth else nothing
+    image, nearest = _glshade.render_draws(
+        draws, view=np.ascontiguousarray(view, dtype=np.float64),
+        projection=np.ascontiguousarray(projection, dtype=np.float64), width=width,
+        height=height, shading="phong", provoking_vertex="last", background=background,
+        transfer=transfer, clamp=clamp, placement="vertices",
+    )  # fmt: skip
+    result = image.view(Image)
     return (result, nearest) if depth else result

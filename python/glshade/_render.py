@@ -259,7 +259,7 @@ def render(
         return render_pyrender(
             vertices, width=w, height=h,
             transfer=transfer_name("gamma2.2" if transfer is None else transfer),
-            clamp=flag(clamp, "clamp"), depth=flag(depth, "depth"), render=render,
+            clamp=flag(clamp, "clamp"), depth=flag(depth, "depth"),
         )  # fmt: skip
     encoding = transfer_name("linear" if transfer is None else transfer)
     given = render_input(
@@ -287,8 +287,9 @@ def render(
     gl = given.scene._gl_options(gl_options, colors=c is not None)
     if cull is None:
         cull = cast(Cull | None, given.scene._default_cull())
-    clear = rgba(background, "background")
     warn_if_bytes(color(background, "background"), "background", "render")
+    # The background is encoded as the pixels are, in the image's dtype.
+    clear = apply_transfer(np.array([rgba(background, "background")], dtype=v.dtype), encoding)
     image, z = _glshade.render(
         v,
         f,
@@ -305,7 +306,8 @@ def render(
         normals=n,
         colors=c,
         cull="none" if cull is None else choice(cull, "cull"),
-        background=np.array(clear),
+        background=clear[0].astype(np.float64),
+        transfer=encoding,
         clamp=flag(clamp, "clamp"),
         texture=None if given.texture is None else texels(given.texture),
         uv=given.uv,
@@ -313,5 +315,5 @@ def render(
         texture_wrap=wrap_modes(texture_wrap),
         **gl,
     )
-    result = apply_transfer(image, encoding).view(Image)
+    result = image.view(Image)
     return (result, z) if depth else result

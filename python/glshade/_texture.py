@@ -1,6 +1,6 @@
 """Textures at the boundary: an image (numpy array or PIL image, grey, grey and alpha, RGB or
-RGBA, uint8, uint16 or float) as the float32 RGBA texels `render` samples, and the names of its
-filter and wrap modes."""
+RGBA, uint8, uint16 or float) as the (height, width, channels) texels `render` samples in place,
+and the names of its filter and wrap modes."""
 
 from __future__ import annotations
 
@@ -16,10 +16,16 @@ __all__ = ["FILTERS", "WRAPS", "texels", "wrap_modes"]
 FILTERS = ("nearest", "linear")
 WRAPS = ("repeat", "mirrored_repeat", "clamp_to_edge")
 
+# The types the renderer reads in place (uint8 and uint16 normalised, as GL's unsigned
+# normalised formats); others are converted to float32 on every call.
+_IN_PLACE = (np.uint8, np.uint16, np.float32, np.float64)
 
-def texels(image: Any) -> NDArray[np.float32]:
-    """`image` as C-contiguous (height, width, 4) float32 RGBA, the top row first: uint8 and
-    uint16 scaled to [0, 1], grey copied into R, G and B, a missing alpha 1."""
+
+def texels(image: Any) -> NDArray[Any]:
+    """`image` as a C-contiguous (height, width, channels) array, the top row first, without a
+    copy where it already is one of uint8, uint16, float32 or float64 (a grey image gains its
+    channel axis as a view); other real types as float32. The renderer reads 1 to 4 channels
+    (grey, grey and alpha, RGB, RGBA) as GL's texture formats do, a missing alpha 1."""
     a = array(np.asarray(image), "texture")
     if a.ndim == 2:
         a = a[..., None]
@@ -28,19 +34,13 @@ def texels(image: Any) -> NDArray[np.float32]:
             f"texture must have shape (height, width) or (height, width, 1, 2, 3 or 4), got "
             f"shape {a.shape}"
         )
-    if a.dtype == np.uint8 or a.dtype == np.uint16:
-        values = a / float(np.iinfo(a.dtype).max)
-    elif a.dtype.kind in "fiu":
-        values = a.astype(np.float64)
-    else:
+    if a.dtype.kind not in "fiu":
         raise TypeError(f"texture must be a real image (uint8, uint16 or float), got {a.dtype}")
-    channels = values.shape[2]
-    if channels <= 2:
-        grey = np.repeat(values[..., :1], 3, axis=2)
-        values = np.concatenate([grey, values[..., 1:]], axis=2)
-    if values.shape[2] == 3:
-        values = np.concatenate([values, np.ones((*values.shape[:2], 1))], axis=2)
-    return np.ascontiguousarray(values, dtype=np.float32)
+    if not a.dtype.isnative:  # big-endian data: the same type in this machine's order
+        a = a.astype(a.dtype.newbyteorder("="))
+    if a.dtype.type in _IN_PLACE:
+        return np.ascontiguousarray(a)
+    return np.ascontiguousarray(a, dtype=np.float32)
 
 
 def wrap_modes(value: object) -> tuple[str, str]:

@@ -13,12 +13,14 @@ use super::scene::Scene;
 use super::threejs::ThreejsScene;
 use crate::gl::material::ColorMaterial;
 use crate::gl::scene::ValidScene as GlState;
+use crate::gltf::scene::ValidScene as GltfState;
 use crate::lighting::accuracy::Accuracy;
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::fixed_function::options::ShadeOptions;
 use crate::lighting::model::Model;
 use crate::lighting::world::WorldModel;
 use crate::render::shader::RenderModel;
+use crate::threejs::scene::ValidScene as ThreejsState;
 
 /// The native scene of any model: `glshade.Scene`'s, `glshade.gltf.Scene`'s or
 /// `glshade.threejs.Scene`'s.
@@ -49,7 +51,34 @@ impl AnyScene<'_> {
             Self::Threejs(scene) => work.call(&scene.get().state),
         }
     }
+
+    /// The state of this scene if its model is `M`.
+    pub fn state<M: BindingModel>(&self) -> Option<&M> {
+        M::of(self)
+    }
 }
+
+/// A model's state, told apart among the scenes of every model.
+pub trait OfScene: Sized {
+    /// The state of `scene` if it is of this model.
+    fn of<'a>(scene: &'a AnyScene<'_>) -> Option<&'a Self>;
+}
+
+/// `OfScene` for the state held by one variant of [`AnyScene`].
+macro_rules! of_scene {
+    ($($state:ty => $variant:ident),*) => {$(
+        impl OfScene for $state {
+            fn of<'a>(scene: &'a AnyScene<'_>) -> Option<&'a Self> {
+                match scene {
+                    AnyScene::$variant(s) => Some(&s.get().state),
+                    _ => None,
+                }
+            }
+        }
+    )*};
+}
+
+of_scene!(GlState => Gl, GltfState => Gltf, ThreejsState => Threejs);
 
 /// The options of a `shade` or `describe` call: what every model takes (`accuracy`, `clamp`),
 /// and GL's own, which the package passes for a `glshade.Scene` only.
@@ -74,7 +103,7 @@ pub struct Settings<'py> {
 }
 
 /// A model the binding calls: its options from the call's settings.
-pub trait BindingModel: RenderModel {
+pub trait BindingModel: RenderModel + OfScene {
     /// The model's options for a `shade` call with `settings`.
     ///
     /// # Errors
@@ -112,7 +141,7 @@ impl BindingModel for GlState {
 /// A world model called on arrays in world coordinates (the render alone gives a model matrix).
 impl<W> BindingModel for W
 where
-    W: WorldModel + RenderModel + Model<Options = <W as WorldModel>::Options>,
+    W: WorldModel + RenderModel + OfScene + Model<Options = <W as WorldModel>::Options>,
 {
     fn options(settings: &Settings<'_>) -> PyResult<<W as WorldModel>::Options> {
         let (accuracy, clamp) = common(settings)?;

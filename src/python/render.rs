@@ -1,10 +1,11 @@
-//! The binding of `render`.
+//! The binding of `render`: one mesh (`render`) or several in one frame (`render_draws`),
+//! through the same typed path.
 
 use numpy::{
-    Element, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3, PyUntypedArray,
-    PyUntypedArrayMethods,
+    Element, PyArrayMethods, PyReadonlyArray1, PyReadonlyArray2, PyReadonlyArray3,
+    PyReadonlyArrayDyn, PyUntypedArray, PyUntypedArrayMethods,
 };
-use pyo3::exceptions::PyValueError;
+use pyo3::exceptions::{PyTypeError, PyValueError};
 use pyo3::prelude::*;
 
 use super::arrays::matrix;
@@ -16,67 +17,232 @@ use crate::gl::material::ColorMaterial;
 use crate::lighting::clamp::ColorClamp;
 use crate::numbers::real::Real;
 use crate::render::camera::Camera;
-use crate::render::mesh::{Mesh, Textured};
+use crate::render::mesh::{Draw, Mesh, Textured};
 use crate::render::options::{Provoking, RenderOptions, Shading};
+use crate::render::placement::Placement;
 use crate::render::raster::{Cull, Viewport};
-use crate::render::texture::{Filter, Texture, Wrap};
+use crate::render::texture::{Filter, Texels, Texture, Wrap};
+use crate::render::transfer::Transfer;
 
 /// A render's image and depth, of the vertices' dtype.
 type Rendered<'py> = PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)>;
 
-/// A render's texture as the binding takes it: float32 RGBA texels (height, width, 4), the
-/// texture coordinates (n, 2) of the vertices' dtype, the filter and the wrap modes.
+/// A texture's values read in place, of the type the caller stores them in.
+enum TexelArray<'py> {
+    U8(PyReadonlyArray3<'py, u8>),
+    U16(PyReadonlyArray3<'py, u16>),
+    F32(PyReadonlyArray3<'py, f32>),
+    F64(PyReadonlyArray3<'py, f64>),
+}
+
+impl<'py> TexelArray<'py> {
+    /// `texture`, a (height, width, channels) array of uint8, uint16, float32 or float64.
+    fn read(texture: &Bound<'py, PyUntypedArray>) -> PyResult<Self> {
+        fn typed<'py, X: Element>(
+            a: &Bound<'py, PyUntypedArray>,
+        ) -> Option<PyReadonlyArray3<'py, X>> {
+            a.cast::<numpy::PyArray3<X>>()
+                .ok()
+                .and_then(|a| a.try_readonly().ok())
+        }
+        typed::<u8>(texture)
+            .map(Self::U8)
+            .or_else(|| typed::<u16>(texture).map(Self::U16))
+            .or_else(|| typed::<f32>(texture).map(Self::F32))
+            .or_else(|| typed::<f64>(texture).map(Self::F64))
+            .ok_or_else(|| {
+                PyTypeError::new_err(format!(
+                    "texture must be a (height, width, channels) array of uint8, uint16, \
+                     float32 or float64, got {} of shape {}",
+                    texture.dtype(),
+                    shape_text(texture.shape())
+                ))
+            })
+    }
+
+    /// The shape, (height, width, channels).
+    fn shape(&self) -> &[usize] {
+        match self {
+            Self::U8(a) => a.shape(),
+            Self::U16(a) => a.shape(),
+            Self::F32(a) => a.shape(),
+            Self::F64(a) => a.shape(),
+        }
+    }
+
+    /// The values in place; an error unless C-contiguous and aligned.
+    fn texels(&self) -> PyResult<Texels<'_>> {
+        let contiguous = || PyValueError::new_err("texture must be C-contiguous and aligned");
+        Ok(match self {
+            Self::U8(a) => Texels::U8(a.as_slice().map_err(|_| contiguous())?),
+            Self::U16(a) => Texels::U16(a.as_slice().map_err(|_| contiguous())?),
+            Self::F32(a) => Texels::F32(a.as_slice().map_err(|_| contiguous())?),
+            Self::F64(a) => Texels::F64(a.as_slice().map_err(|_| contiguous())?),
+        })
+    }
+}
+
+/// A mesh's texture as the binding takes it: its texels as stored (height, width, channels),
+/// the texture coordinates (n, 2) of the vertices' dtype, the filter and the wrap modes.
 pub struct TextureArgs<'py> {
-    texels: PyReadonlyArray3<'py, f32>,
+    texels: TexelArray<'py>,
     uv: Bound<'py, PyUntypedArray>,
     filter: Filter,
     wrap: [Wrap; 2],
 }
 
+impl<'py> TextureArgs<'py> {
+    /// The texture of `texture` and `uv`, given together or not at all.
+    fn parse(
+        texture: Option<Bound<'py, PyUntypedArray>>,
+        uv: Option<Bound<'py, PyUntypedArray>>,
+        filter: &str,
+        wrap: &(String, String),
+    ) -> PyResult<Option<Self>> {
+        match (texture, uv) {
+            (Some(texels), Some(uv)) => Ok(Some(Self {
+                texels: TexelArray::read(&texels)?,
+                uv,
+                filter: Filter::parse(filter).map_err(to_pyerr)?,
+                wrap: [
+                    Wrap::parse(&wrap.0).map_err(to_pyerr)?,
+                    Wrap::parse(&wrap.1).map_err(to_pyerr)?,
+                ],
+            })),
+            (None, None) => Ok(None),
+            _ => Err(PyValueError::new_err(
+                "texture and uv go together: give both or neither",
+            )),
+        }
+    }
+}
+
+/// One mesh of a frame as the binding takes it: its arrays, its scene, its model matrix and
+/// its culling.
+pub struct DrawArgs<'py> {
+    vertices: Bound<'py, PyUntypedArray>,
+    faces: Bound<'py, PyUntypedArray>,
+    scene: AnyScene<'py>,
+    model: glam::DMat4,
+    cull: Cull,
+    placement: Placement,
+    normals: Option<Bound<'py, PyUntypedArray>>,
+    colors: Option<Bound<'py, PyUntypedArray>>,
+    texture: Option<TextureArgs<'py>>,
+}
+
+/// A mesh's arrays read as `T`, owned while the render borrows them.
+struct ReadDraw<'py, T: Element> {
+    vertices: PyReadonlyArrayDyn<'py, T>,
+    faces: Vec<[i64; 3]>,
+    normals: Option<PyReadonlyArrayDyn<'py, T>>,
+    colors: Option<PyReadonlyArrayDyn<'py, T>>,
+    uv: Option<PyReadonlyArrayDyn<'py, T>>,
+}
+
+impl<'py, T: Element + Real> ReadDraw<'py, T> {
+    /// Reads `draw`'s arrays; `at` names the draw in errors (empty for a lone mesh).
+    fn new(draw: &DrawArgs<'py>, at: &str) -> PyResult<Self> {
+        let named = |name: &str| format!("{at}{name}");
+        let optional = |a: &Option<Bound<'py, PyUntypedArray>>, name: &str| {
+            a.as_ref().map(|a| read::<T>(a, &named(name))).transpose()
+        };
+        Ok(Self {
+            vertices: read::<T>(&draw.vertices, &named("vertices"))?,
+            faces: faces::copy(&draw.faces)?,
+            normals: optional(&draw.normals, "normals")?,
+            colors: optional(&draw.colors, "colors")?,
+            uv: draw
+                .texture
+                .as_ref()
+                .map(|t| read::<T>(&t.uv, &named("uv")))
+                .transpose()?,
+        })
+    }
+
+    /// The mesh of these arrays and `texture`'s texels.
+    fn mesh<'a>(
+        &'a self,
+        texture: Option<&'a TextureArgs<'py>>,
+        at: &str,
+    ) -> PyResult<Mesh<'a, T>> {
+        let named = |name: &str| format!("{at}{name}");
+        let textured = match (texture, &self.uv) {
+            (Some(t), Some(uv)) => {
+                let shape = t.texels.shape();
+                Some(Textured {
+                    uv: rows::<T, 2>(uv, &named("uv"))?,
+                    texture: Texture {
+                        width: shape[1],
+                        height: shape[0],
+                        channels: shape[2],
+                        texels: t.texels.texels()?,
+                        filter: t.filter,
+                        wrap: t.wrap,
+                    },
+                })
+            }
+            _ => None,
+        };
+        Ok(Mesh {
+            vertices: rows::<T, 3>(&self.vertices, &named("vertices"))?,
+            faces: &self.faces,
+            normals: self
+                .normals
+                .as_ref()
+                .map(|n| rows::<T, 3>(n, &named("normals")))
+                .transpose()?,
+            colors: self.colors.as_ref().map(vertex_colors).transpose()?,
+            textured,
+        })
+    }
+}
+
+/// Renders `draws`, of one model (`first` is the first one's state) and of vertices of `T`.
 fn render_typed<'py, T: Element + Real, M: BindingModel>(
     py: Python<'py>,
-    scene: &M,
+    draws: &[DrawArgs<'py>],
+    first: &M,
     camera: &Camera,
     options: &RenderOptions,
-    vertices: &Bound<'py, PyUntypedArray>,
-    faces: &Bound<'py, PyUntypedArray>,
-    normals: Option<&Bound<'py, PyUntypedArray>>,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
-    texture: Option<&TextureArgs<'py>>,
 ) -> Rendered<'py> {
-    let vertices = read::<T>(vertices, "vertices")?;
-    let normals = normals.map(|a| read::<T>(a, "normals")).transpose()?;
-    let colors = colors.map(|a| read::<T>(a, "colors")).transpose()?;
-    let uv = texture.map(|t| read::<T>(&t.uv, "uv")).transpose()?;
-    let faces = faces::copy(faces)?;
-    let textured = match (texture, &uv) {
-        (Some(t), Some(uv)) => {
-            let shape = t.texels.shape();
-            Some(Textured {
-                uv: rows::<T, 2>(uv, "uv")?,
-                texture: Texture {
-                    width: shape[1],
-                    height: shape[0],
-                    texels: t.texels.as_slice().map_err(|_| {
-                        PyValueError::new_err("texture must be C-contiguous and aligned")
-                    })?,
-                    filter: t.filter,
-                    wrap: t.wrap,
-                },
-            })
+    let at = |d: usize| {
+        if draws.len() > 1 {
+            format!("draws[{d}].")
+        } else {
+            String::new()
         }
-        _ => None,
     };
-    let mesh = Mesh {
-        vertices: rows::<T, 3>(&vertices, "vertices")?,
-        faces: &faces,
-        normals: normals
-            .as_ref()
-            .map(|n| rows::<T, 3>(n, "normals"))
-            .transpose()?,
-        colors: colors.as_ref().map(vertex_colors).transpose()?,
-        textured,
-    };
+    let mut scenes = Vec::with_capacity(draws.len());
+    for (d, draw) in draws.iter().enumerate() {
+        let scene = if d == 0 {
+            Some(first)
+        } else {
+            draw.scene.state::<M>()
+        };
+        scenes.push(scene.ok_or_else(|| {
+            PyTypeError::new_err(format!(
+                "{}scene must be of the first draw's model, as every draw's",
+                at(d)
+            ))
+        })?);
+    }
+    let read = draws
+        .iter()
+        .enumerate()
+        .map(|(d, draw)| ReadDraw::<T>::new(draw, &at(d)))
+        .collect::<PyResult<Vec<_>>>()?;
+    let mut meshes = Vec::with_capacity(draws.len());
+    for (d, (arrays, draw)) in read.iter().zip(draws).enumerate() {
+        let mesh = arrays.mesh(draw.texture.as_ref(), &at(d))?;
+        meshes.push(Draw {
+            mesh,
+            scene: scenes[d],
+            model: draw.model,
+            cull: draw.cull,
+            placement: draw.placement,
+        });
+    }
     let Viewport { width, height } = options.viewport;
     options.viewport.validate().map_err(to_pyerr)?;
     let image = zeros::<T>(py, &[height, width, 4])?;
@@ -85,27 +251,69 @@ fn render_typed<'py, T: Element + Real, M: BindingModel>(
         let (mut image, mut depth) = (image.readwrite(), depth.readwrite());
         let (image, depth) = (image.as_slice_mut()?, depth.as_slice_mut()?);
         run(py, true, |stop| {
-            crate::render::render(scene, &mesh, camera, options, image, depth, stop)
+            crate::render::render_draws(&meshes, camera, options, image, depth, stop)
         })?;
     }
     Ok((image.into_any(), depth.into_any()))
 }
 
+/// The work of one render, done with whichever model the first draw's scene is.
+struct RenderWork<'a, 'py> {
+    py: Python<'py>,
+    draws: &'a [DrawArgs<'py>],
+    camera: &'a Camera,
+    options: &'a RenderOptions,
+}
+
+impl<'py> OnModel for RenderWork<'_, 'py> {
+    type Output = Rendered<'py>;
+    fn call<M: BindingModel>(self, first: &M) -> Self::Output {
+        let (py, draws, camera, options) = (self.py, self.draws, self.camera, self.options);
+        match float_of(&draws[0].vertices, "vertices")? {
+            Float::F32 => render_typed::<f32, M>(py, draws, first, camera, options),
+            Float::F64 => render_typed::<f64, M>(py, draws, first, camera, options),
+        }
+    }
+}
+
+/// The camera of `view` and `projection`.
+fn camera(
+    view: &PyReadonlyArray2<'_, f64>,
+    projection: &PyReadonlyArray2<'_, f64>,
+) -> PyResult<Camera> {
+    Ok(Camera {
+        view: matrix(view, "view")?,
+        projection: matrix(projection, "projection")?,
+    })
+}
+
+/// The background colour, four values.
+fn background(background: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 4]> {
+    background.as_slice()?.try_into().map_err(|_| {
+        PyValueError::new_err(format!(
+            "background must have 4 values, got shape {}",
+            shape_text(background.shape())
+        ))
+    })
+}
+
 /// Renders a mesh lit by `scene`, a native scene of any model; see `glshade.render`, whose
 /// intake prepared the arrays (float32 or float64 of one dtype, int64 faces, float64 matrices)
 /// and passes GL's options (`color_material` to `rescale_normal`) for a `glshade.Scene` only.
-/// Returns the (height, width, 4) image and the (height, width) depth, of the vertices' dtype.
+/// `transfer` encodes the drawn pixels' RGB; `background` is written as it is (the caller
+/// encodes it). Returns the (height, width, 4) image and the (height, width) depth, of the
+/// vertices' dtype.
 #[pyfunction]
 #[pyo3(signature = (
     vertices, faces, scene, *, view, projection, model, width, height, shading, provoking_vertex,
-    normals, colors, cull, background, clamp, texture, uv, texture_filter, texture_wrap,
-    color_material=None, color_material_face="front_and_back", normalize=true,
+    normals, colors, cull, background, transfer, clamp, texture, uv, texture_filter,
+    texture_wrap, color_material=None, color_material_face="front_and_back", normalize=true,
     rescale_normal=false
 ))]
 pub fn render<'py>(
     py: Python<'py>,
-    vertices: &Bound<'py, PyUntypedArray>,
-    faces: &Bound<'py, PyUntypedArray>,
+    vertices: Bound<'py, PyUntypedArray>,
+    faces: Bound<'py, PyUntypedArray>,
     scene: AnyScene<'py>,
     view: PyReadonlyArray2<'py, f64>,
     projection: PyReadonlyArray2<'py, f64>,
@@ -114,12 +322,13 @@ pub fn render<'py>(
     height: usize,
     shading: &str,
     provoking_vertex: &str,
-    normals: Option<&Bound<'py, PyUntypedArray>>,
-    colors: Option<&Bound<'py, PyUntypedArray>>,
+    normals: Option<Bound<'py, PyUntypedArray>>,
+    colors: Option<Bound<'py, PyUntypedArray>>,
     cull: &str,
     background: PyReadonlyArray1<'py, f64>,
+    transfer: &str,
     clamp: bool,
-    texture: Option<PyReadonlyArray3<'py, f32>>,
+    texture: Option<Bound<'py, PyUntypedArray>>,
     uv: Option<Bound<'py, PyUntypedArray>>,
     texture_filter: &str,
     texture_wrap: (String, String),
@@ -128,40 +337,15 @@ pub fn render<'py>(
     normalize: bool,
     rescale_normal: bool,
 ) -> Rendered<'py> {
-    let texture = match (texture, uv) {
-        (Some(texels), Some(uv)) => Some(TextureArgs {
-            texels,
-            uv,
-            filter: Filter::parse(texture_filter).map_err(to_pyerr)?,
-            wrap: [
-                Wrap::parse(&texture_wrap.0).map_err(to_pyerr)?,
-                Wrap::parse(&texture_wrap.1).map_err(to_pyerr)?,
-            ],
-        }),
-        (None, None) => None,
-        _ => {
-            return Err(PyValueError::new_err(
-                "texture and uv go together: give both or neither",
-            ))
-        }
-    };
-    let camera = Camera {
-        view: matrix(&view, "view")?,
-        projection: matrix(&projection, "projection")?,
-    };
-    let background: [f64; 4] = background.as_slice()?.try_into().map_err(|_| {
-        PyValueError::new_err(format!(
-            "background must have 4 values, got shape {}",
-            shape_text(background.shape())
-        ))
-    })?;
+    let texture = TextureArgs::parse(texture, uv, texture_filter, &texture_wrap)?;
     let options = RenderOptions {
         viewport: Viewport { width, height },
         shading: Shading::parse(shading).map_err(to_pyerr)?,
         provoking: Provoking::parse(provoking_vertex).map_err(to_pyerr)?,
         cull: Cull::parse(cull).map_err(to_pyerr)?,
         model: matrix(&model, "model")?,
-        background,
+        background: self::background(&background)?,
+        transfer: Transfer::parse(transfer).map_err(to_pyerr)?,
         normalize,
         rescale_normal,
         color_material: color_material
@@ -170,53 +354,105 @@ pub fn render<'py>(
             .map_err(to_pyerr)?,
         clamp: ColorClamp::from(clamp),
     };
-    scene.with(RenderWork {
-        py,
-        camera: &camera,
-        options: &options,
+    let draw = DrawArgs {
         vertices,
         faces,
+        scene,
+        model: options.model,
+        cull: options.cull,
+        placement: Placement::Model,
         normals,
         colors,
-        texture: texture.as_ref(),
+        texture,
+    };
+    let camera = self::camera(&view, &projection)?;
+    let draws = [draw];
+    draws[0].scene.with(RenderWork {
+        py,
+        draws: &draws,
+        camera: &camera,
+        options: &options,
     })
 }
 
-/// The work of one `render` call, done with whichever model the scene is.
-struct RenderWork<'a, 'py> {
+/// A mesh of `render_draws`: `(vertices, faces, scene, model, cull, normals, colors,
+/// texture, uv, texture_filter, texture_wrap)`, as `render` takes them.
+type DrawTuple<'py> = (
+    Bound<'py, PyUntypedArray>,
+    Bound<'py, PyUntypedArray>,
+    AnyScene<'py>,
+    PyReadonlyArray2<'py, f64>,
+    String,
+    Option<Bound<'py, PyUntypedArray>>,
+    Option<Bound<'py, PyUntypedArray>>,
+    Option<Bound<'py, PyUntypedArray>>,
+    Option<Bound<'py, PyUntypedArray>>,
+    String,
+    (String, String),
+);
+
+/// Renders several meshes into one frame, depth-tested together in the order given, each with
+/// its own scene (all of one model), model matrix and culling: `draws` is a non-empty list of
+/// tuples `(vertices, faces, scene, model, cull, normals, colors, texture, uv,
+/// texture_filter, texture_wrap)`, every vertex array of one dtype. `placement` says where
+/// the model matrices apply: `"model"` as `render`'s `model`, or `"vertices"` per vertex
+/// first, normals normalised there (a vertex shader's way). GL's own options take their
+/// defaults. Returns the image and the depth as `render` does.
+#[pyfunction]
+#[pyo3(signature = (
+    draws, *, view, projection, width, height, shading, provoking_vertex, background, transfer,
+    clamp, placement="model"
+))]
+pub fn render_draws<'py>(
     py: Python<'py>,
-    camera: &'a Camera,
-    options: &'a RenderOptions,
-    vertices: &'a Bound<'py, PyUntypedArray>,
-    faces: &'a Bound<'py, PyUntypedArray>,
-    normals: Option<&'a Bound<'py, PyUntypedArray>>,
-    colors: Option<&'a Bound<'py, PyUntypedArray>>,
-    texture: Option<&'a TextureArgs<'py>>,
-}
-
-impl<'py> RenderWork<'_, 'py> {
-    /// The render on vertices of `T` with `scene`'s model.
-    fn typed<T: Element + Real, M: BindingModel>(self, scene: &M) -> Rendered<'py> {
-        render_typed::<T, M>(
-            self.py,
+    draws: Vec<DrawTuple<'py>>,
+    view: PyReadonlyArray2<'py, f64>,
+    projection: PyReadonlyArray2<'py, f64>,
+    width: usize,
+    height: usize,
+    shading: &str,
+    provoking_vertex: &str,
+    background: PyReadonlyArray1<'py, f64>,
+    transfer: &str,
+    clamp: bool,
+    placement: &str,
+) -> Rendered<'py> {
+    if draws.is_empty() {
+        return Err(PyValueError::new_err(
+            "draws must hold at least one mesh, got none",
+        ));
+    }
+    let options = RenderOptions {
+        viewport: Viewport { width, height },
+        shading: Shading::parse(shading).map_err(to_pyerr)?,
+        provoking: Provoking::parse(provoking_vertex).map_err(to_pyerr)?,
+        background: self::background(&background)?,
+        transfer: Transfer::parse(transfer).map_err(to_pyerr)?,
+        clamp: ColorClamp::from(clamp),
+        ..RenderOptions::default()
+    };
+    let placement = Placement::parse(placement).map_err(to_pyerr)?;
+    let mut parsed = Vec::with_capacity(draws.len());
+    for (d, draw) in draws.into_iter().enumerate() {
+        let (vertices, faces, scene, model, cull, normals, colors, texture, uv, filter, wrap) =
+            draw;
+        parsed.push(DrawArgs {
+            vertices,
+            faces,
             scene,
-            self.camera,
-            self.options,
-            self.vertices,
-            self.faces,
-            self.normals,
-            self.colors,
-            self.texture,
-        )
+            model: matrix(&model, &format!("draws[{d}].model"))?,
+            cull: Cull::parse(&cull).map_err(to_pyerr)?,
+            placement,
+            normals,
+            colors,
+            texture: TextureArgs::parse(texture, uv, &filter, &wrap)?,
+        });
     }
-}
-
-impl<'py> OnModel for RenderWork<'_, 'py> {
-    type Output = Rendered<'py>;
-    fn call<M: BindingModel>(self, scene: &M) -> Self::Output {
-        match float_of(self.vertices, "vertices")? {
-            Float::F32 => self.typed::<f32, M>(scene),
-            Float::F64 => self.typed::<f64, M>(scene),
-        }
-    }
+    let camera = self::camera(&view, &projection)?;
+    parsed[0].scene.with(RenderWork {
+        py,
+        draws: &parsed,
+        camera: &camera,
+        options: &options,
+    })
 }

@@ -1,6 +1,11 @@
-//! The triangle mesh a render draws, apart from the renderer so that its passes can read it.
+//! What a render draws: a triangle mesh ([`Mesh`]), and a mesh placed in a frame of several
+//! ([`Draw`]); apart from the renderer so that its passes can read them.
+
+use glam::DMat4;
 
 use crate::gl::vertex_colors::VertexColors;
+use crate::render::placement::Placement;
+use crate::render::raster::Cull;
 use crate::render::texture::Texture;
 
 /// A texture and the coordinates that map it onto a mesh.
@@ -29,3 +34,28 @@ pub struct Mesh<'a, T> {
     /// texel decoded from sRGB, where the model is evaluated (glTF's `baseColorTexture`).
     pub textured: Option<Textured<'a, T>>,
 }
+
+/// One mesh of a frame of several ([`crate::render::render_draws`]): placed in the world by
+/// `model` (where `placement` says), lit by `scene`, its triangles culled by `cull`.
+#[derive(Debug)]
+pub struct Draw<'a, T, M> {
+    /// The mesh, in model coordinates.
+    pub mesh: Mesh<'a, T>,
+    /// What lights it.
+    pub scene: &'a M,
+    /// Model to world coordinates, affine (as [`crate::render::options::RenderOptions::model`]).
+    pub model: DMat4,
+    /// Which facing triangles are discarded.
+    pub cull: Cull,
+    /// Where `model` applies: in the model's evaluation, or to the vertices first.
+    pub placement: Placement,
+}
+
+// By hand: a derive would ask `M: Copy`, though a draw holds only a reference to its scene.
+impl<T: Copy, M> Clone for Draw<'_, T, M> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+
+impl<T: Copy, M> Copy for Draw<'_, T, M> {}

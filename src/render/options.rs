@@ -8,6 +8,7 @@ use crate::lighting::clamp::ColorClamp;
 use crate::normals::adjacency::index;
 use crate::numbers::real::Real;
 use crate::render::raster::{Cull, Viewport};
+use crate::render::transfer::Transfer;
 
 /// Where the lighting equation is evaluated.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -95,8 +96,10 @@ pub struct RenderOptions {
     pub cull: Cull,
     /// Model to world coordinates (affine).
     pub model: DMat4,
-    /// The clear colour, RGBA.
+    /// The clear colour, RGBA, written as it is (not encoded by `transfer`).
     pub background: [f64; 4],
+    /// How the drawn pixels' RGB is encoded (alpha and the depth never are).
+    pub transfer: Transfer,
     /// `GL_NORMALIZE`, applied wherever the equation is evaluated (after interpolation for
     /// Phong).
     pub normalize: bool,
@@ -121,6 +124,7 @@ impl Default for RenderOptions {
             cull: Cull::None,
             model: DMat4::IDENTITY,
             background: [0.0; 4],
+            transfer: Transfer::Linear,
             normalize: true,
             rescale_normal: false,
             color_material: None,

@@ -13,7 +13,6 @@ use crate::errors::stop::Stop;
 use crate::gl::scene::{Scene as GlScene, ValidScene as GlState};
 use crate::gl::vertex_colors::VertexColors;
 use crate::gltf::scene::{Scene as GltfScene, ValidScene as GltfState};
-use crate::lighting::clamp::ColorClamp;
 use crate::lighting::fixed_function::options::ShadeOptions;
 use crate::lighting::mesh_phong::options::Options as MeshPhongOptions;
 use crate::lighting::metallic_roughness::options::{ColorRole, Options as GltfOptions};
@@ -187,7 +186,6 @@ impl RenderModel for ThreejsState {
 pub struct Shader<'a, M: RenderModel> {
     scene: Cow<'a, M>,
     options: M::Options,
-    clamp: bool,
 }
 
 impl<'a, M: RenderModel> Shader<'a, M> {
@@ -205,18 +203,12 @@ impl<'a, M: RenderModel> Shader<'a, M> {
         Ok(Self {
             scene,
             options: shade_options,
-            clamp: options.clamp == ColorClamp::On,
         })
     }
 
     /// How many colour planes a call writes.
     pub fn outputs(&self) -> usize {
         self.scene.outputs()
-    }
-
-    /// Whether colours are clamped to [0, 1].
-    pub fn clamp(&self) -> bool {
-        self.clamp
     }
 
     /// Lights the rows into [`Shader::outputs`] planes of RGBA rows in `out`.

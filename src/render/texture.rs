@@ -97,15 +97,63 @@ impl Wrap {
     }
 }
 
-/// An RGBA image sampled as a GL texture.
+/// A texture's values as the caller stores them, `height` rows of `width` texels of
+/// [`Texture::channels`] values each, the image's top row first: read in place, never
+/// converted as a whole.
+#[derive(Clone, Copy, Debug)]
+pub enum Texels<'a> {
+    /// Normalised bytes, c / 255 (GL's `GL_UNSIGNED_BYTE`).
+    U8(&'a [u8]),
+    /// Normalised 16-bit values, c / 65535 (`GL_UNSIGNED_SHORT`).
+    U16(&'a [u16]),
+    /// `float32`.
+    F32(&'a [f32]),
+    /// `float64`, held as `float32` as GL's `GL_RGBA32F` holds it.
+    F64(&'a [f64]),
+}
+
+impl Texels<'_> {
+    /// How many values there are.
+    pub fn len(&self) -> usize {
+        match self {
+            Self::U8(t) => t.len(),
+            Self::U16(t) => t.len(),
+            Self::F32(t) => t.len(),
+            Self::F64(t) => t.len(),
+        }
+    }
+
+    /// Whether there are none.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Value `k` as a `GL_RGBA32F` texture holds it: normalised integers divided by their
+    /// largest value and rounded to `f32`, floats rounded to `f32`.
+    #[inline]
+    #[allow(clippy::cast_possible_truncation)] // the rounding to f32 is GL's
+    fn value(&self, k: usize) -> f64 {
+        f64::from(match self {
+            Self::U8(t) => (f64::from(t[k]) / 255.0) as f32,
+            Self::U16(t) => (f64::from(t[k]) / 65535.0) as f32,
+            Self::F32(t) => t[k],
+            Self::F64(t) => t[k] as f32,
+        })
+    }
+}
+
+/// An image sampled as a GL texture.
 #[derive(Clone, Copy, Debug)]
 pub struct Texture<'a> {
     /// Texels per row.
     pub width: usize,
     /// Rows.
     pub height: usize,
-    /// RGBA texels, `height` rows of `width`, the image's top row first.
-    pub texels: &'a [f32],
+    /// Values per texel: 4 (RGBA), 3 (RGB, alpha 1), 2 (grey and alpha) or 1 (grey, alpha 1);
+    /// grey is read into R, G and B, as GL's `GL_LUMINANCE` textures are.
+    pub channels: usize,
+    /// The texels.
+    pub texels: Texels<'a>,
     /// The filter.
     pub filter: Filter,
     /// The wrap modes along u (s) and v (t).
@@ -116,19 +164,22 @@ impl Texture<'_> {
     /// Checks the size against the texels.
     ///
     /// # Errors
-    /// A value error for an empty texture or a texel count that is not height × width × 4.
+    /// A value error for an empty texture, a channel count outside 1 to 4, or a value count
+    /// that is not height × width × channels.
     pub fn validate(&self) -> Result<(), Error> {
         let expected = self
             .width
             .checked_mul(self.height)
-            .and_then(|n| n.checked_mul(4));
-        if self.width == 0 || self.height == 0 || expected != Some(self.texels.len()) {
+            .and_then(|n| n.checked_mul(self.channels));
+        let channels = (1..=4).contains(&self.channels);
+        if !channels || self.width == 0 || self.height == 0 || expected != Some(self.texels.len()) {
             return Err(Error::value(format!(
-                "the texture must have height x width x 4 values with height and width >= 1, \
-                 got {} values for {} x {}",
+                "the texture must have height x width x channels values with height and width \
+                 >= 1 and 1 to 4 channels, got {} values for {} x {} x {}",
                 self.texels.len(),
                 self.height,
-                self.width
+                self.width,
+                self.channels
             )));
         }
         Ok(())
@@ -139,8 +190,20 @@ impl Texture<'_> {
     fn texel(&self, i: i64, j: i64) -> [f64; 4] {
         let column = self.wrap[0].index(i, self.width);
         let row = self.height - 1 - self.wrap[1].index(j, self.height);
-        let at = (row * self.width + column) * 4;
-        std::array::from_fn(|k| f64::from(self.texels[at + k]))
+        let at = (row * self.width + column) * self.channels;
+        let value = |k| self.texels.value(at + k);
+        match self.channels {
+            1 => {
+                let grey = value(0);
+                [grey, grey, grey, 1.0]
+            }
+            2 => {
+                let grey = value(0);
+                [grey, grey, grey, value(1)]
+            }
+            3 => [value(0), value(1), value(2), 1.0],
+            _ => std::array::from_fn(value),
+        }
     }
 
     /// GL's filtered value at texture coordinates `uv`; NaN for a coordinate that is not
@@ -177,19 +240,6 @@ impl Texture<'_> {
     }
 }
 
-/// A texel decoded from sRGB as pyrender's `srgb_to_linear` does it (IEC 61966-2-1's curve:
-/// c/12.92 below 0.04045, ((c + 0.055)/1.055)^2.4 above); alpha as it is.
-pub fn srgb_to_linear(c: [f64; 4]) -> [f64; 4] {
-    let decode = |x: f64| {
-        if x < 0.04045 {
-            x / 12.92
-        } else {
-            ((x + 0.055) / 1.055).powf(2.4)
-        }
-    };
-    [decode(c[0]), decode(c[1]), decode(c[2]), c[3]]
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -204,7 +254,8 @@ mod tests {
         Texture {
             width: 2,
             height: 2,
-            texels: &TEXELS,
+            channels: 4,
+            texels: Texels::F32(&TEXELS),
             filter,
             wrap: [wrap; 2],
         }
@@ -263,5 +314,38 @@ mod tests {
         assert_eq!(clamped, [0, 0, 0, 1, 2, 2, 2]);
         assert!(texture(Filter::Linear, Wrap::Repeat).sample([f64::NAN, 0.0])[0].is_nan());
         assert!(texture(Filter::Linear, Wrap::Repeat).sample([1e300, -1e300])[0].is_finite());
+    }
+
+    #[test]
+    fn every_storage_reads_as_gl_holds_it() {
+        // One texel of each channel count and type; GL's RGBA32F rounds to float32.
+        let read = |texels: Texels<'_>, channels| {
+            let t = Texture {
+                width: 1,
+                height: 1,
+                channels,
+                texels,
+                filter: Filter::Nearest,
+                wrap: [Wrap::Repeat; 2],
+            };
+            t.validate().unwrap();
+            t.sample([0.5, 0.5])
+        };
+        let third = f64::from((1.0_f64 / 3.0) as f32);
+        assert_eq!(read(Texels::U8(&[255]), 1), [1.0, 1.0, 1.0, 1.0]);
+        assert_eq!(read(Texels::U8(&[85, 0]), 2), [third, third, third, 0.0]);
+        assert_eq!(
+            read(Texels::U16(&[65535, 0, 21845]), 3),
+            [1.0, 0.0, third, 1.0]
+        );
+        assert_eq!(
+            read(Texels::F64(&[1.0 / 3.0, 0.5, 2.0, 0.25]), 4),
+            [third, 0.5, 2.0, 0.25]
+        );
+        let wrong = Texture {
+            channels: 5,
+            ..texture(Filter::Nearest, Wrap::Repeat)
+        };
+        assert!(wrong.validate().is_err());
     }
 }

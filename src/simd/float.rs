@@ -138,6 +138,16 @@ pub trait Float:
     fn max(self, other: Self) -> Self;
     /// True unless NaN or infinite.
     fn is_finite(self) -> bool;
+    /// The magnitude.
+    #[must_use]
+    fn abs(self) -> Self;
+    /// The magnitude of `self` with the sign of `sign`.
+    #[must_use]
+    fn copysign(self, sign: Self) -> Self;
+    /// `self` to the power `e`, as the C library's `pow` (not for the kernels: their powers are
+    /// [`crate::numbers::elementary`]'s).
+    #[must_use]
+    fn powf(self, e: Self) -> Self;
 }
 
 macro_rules! impl_float_common {
@@ -161,6 +171,18 @@ macro_rules! impl_float_common {
         #[inline]
         fn is_finite(self) -> bool {
             self.is_finite()
+        }
+        #[inline]
+        fn abs(self) -> Self {
+            self.abs()
+        }
+        #[inline]
+        fn copysign(self, sign: Self) -> Self {
+            self.copysign(sign)
+        }
+        #[inline]
+        fn powf(self, e: Self) -> Self {
+            self.powf(e)
         }
     };
 }

@@ -20,7 +20,17 @@ from conftest import require
 
 import glshade as gs
 from support import glpeers  # first: it sets PYOPENGL_PLATFORM=egl before OpenGL is imported
-from support.pyrender_rays import HEIGHT, ROUNDING, WIDTH, YFOV, ZFAR, ZNEAR, interior, mesh
+from support.pyrender_rays import (
+    HEIGHT,
+    ROUNDING,
+    WIDTH,
+    YFOV,
+    ZFAR,
+    ZNEAR,
+    interior,
+    interior_of,
+    mesh,
+)  # fmt: skip
 
 pytestmark = pytest.mark.gl
 
@@ -170,3 +180,53 @@ def test_a_light_two_percent_off_fails(renderer: Any) -> None:
             node.light.intensity *= 1.02
     error, _ = worst(renderer, scene, 0, ours_scene=off)
     assert error > (ROUNDING + FLOAT32) * 255, error
+
+
+def test_many_meshes_in_one_frame(renderer: Any) -> None:
+    """Meshes that hide one another, each with its material and pose, one of them instanced
+    (a primitive with poses) and single-sided: every draw in one depth-tested frame as
+    pyrender draws them."""
+    rng = np.random.default_rng(7)
+    scene = pyrender.Scene(bg_color=(0, 0, 0, 0), ambient_light=(0.04, 0.05, 0.06))
+    world = []
+    cut = mesh(0)
+    scene.add(pyrender.Mesh.from_trimesh(cut, material=material(
+        baseColorFactor=(0.8, 0.5, 0.3, 1.0), metallicFactor=0.7, roughnessFactor=0.35
+    ), smooth=True))  # fmt: skip
+    world.append(cut)
+    ball = trimesh.creation.icosphere(subdivisions=3, radius=0.35)
+    poses = np.tile(np.eye(4), (2, 1, 1))
+    poses[:, :3, 3] = (-0.45, 0.3, 0.9), (0.5, -0.25, 0.6)
+    single = pyrender.MetallicRoughnessMaterial(
+        alphaMode="OPAQUE", baseColorFactor=(0.3, 0.6, 0.9, 1.0), metallicFactor=0.1,
+        roughnessFactor=0.6,
+    )  # fmt: skip
+    node_pose = np.eye(4)
+    node_pose[:3, :3] = trimesh.transformations.rotation_matrix(0.4, (0, 1, 0))[:3, :3]
+    node_pose[:3, 3] = CENTRE
+    scene.add(pyrender.Mesh.from_trimesh(ball, material=single, poses=poses), pose=node_pose)
+    world += [ball.copy().apply_transform(node_pose @ p) for p in poses]
+    box = trimesh.creation.box((0.5, 0.5, 0.5))
+    box_pose = trimesh.transformations.random_rotation_matrix(rng.random(3))
+    box_pose[:3, 3] = (0.35, 0.35, -3.0)
+    scene.add(pyrender.Mesh.from_trimesh(box, material=material(
+        baseColorFactor=(0.9, 0.9, 0.4, 1.0), metallicFactor=0.0, roughnessFactor=0.8
+    )), pose=box_pose)  # fmt: skip
+    world.append(box.copy().apply_transform(box_pose))
+    scene.add(pyrender.PerspectiveCamera(yfov=YFOV, znear=ZNEAR, zfar=ZFAR), pose=np.eye(4))
+    for kind in ("directional", "point", "spot"):
+        made, where = light(kind)
+        scene.add(made, pose=where)
+    assert sum(len(n.mesh.primitives) for n in scene.mesh_nodes) == 3
+
+    theirs = np.asarray(renderer.render(scene)[0], dtype=np.float64) / 255
+    ours = gs.render(scene, width=WIDTH, height=HEIGHT)
+    projection = scene.main_camera_node.camera.get_projection_matrix(WIDTH, HEIGHT)
+    hits, inside = interior_of(trimesh.util.concatenate(world), projection)
+    faces = np.cumsum([0] + [len(m.faces) for m in world])
+    seen = {int(np.searchsorted(faces, f, side="right")) - 1 for f in hits.face[inside]}
+    assert seen == {0, 1, 2, 3}, f"every mesh and instance shows: {seen}"
+    lit = theirs[inside].max(axis=1) > 0.1
+    assert lit.sum() > 2000
+    error = float(np.abs(ours[..., :3] - theirs)[inside].max())
+    assert error <= ROUNDING + FLOAT32, error * 255

@@ -62,6 +62,58 @@ def test_image_kinds() -> None:
     np.testing.assert_allclose(sixteen, gs.render(MESH, **SIZE), atol=1e-15)
 
 
+def rgba32f(image: np.ndarray) -> np.ndarray:
+    """What a GL RGBA32F texture holds of `image`, written out: unsigned integers normalised
+    (c / 255, c / 65535), grey into R, G and B, a missing alpha 1, float32."""
+    a = image[..., None] if image.ndim == 2 else image
+    if a.dtype.kind == "u":
+        a = a / float(np.iinfo(a.dtype).max)
+    grey = a.shape[2] <= 2
+    rgb = np.repeat(a[..., :1], 3, axis=2) if grey else a[..., :3]
+    alpha = a[..., -1:] if a.shape[2] in (2, 4) else np.ones((*a.shape[:2], 1))
+    return np.ascontiguousarray(np.concatenate([rgb, alpha], axis=2), dtype=np.float32)
+
+
+@pytest.mark.parametrize("dtype", ["uint8", "uint16", "float32", "float64", "int32", "float16"])
+@pytest.mark.parametrize("channels", [None, 1, 2, 3, 4])
+def test_every_storage_samples_as_its_rgba32f_texture(dtype: str, channels: int | None) -> None:
+    """A texture is read in the type and channels it comes in (no conversion per call) and
+    samples as the float32 RGBA texture GL would upload it into."""
+    rng = np.random.default_rng(channels or 0)
+    shape = (5, 7) if channels is None else (5, 7, channels)
+    top = {"uint8": 255, "uint16": 65535, "int32": 1}.get(dtype, 1)
+    image = (
+        (rng.uniform(0, 1, shape) * top).astype(dtype)
+        if top > 1
+        else rng.uniform(0, 1, shape).astype(dtype)
+    )
+    scene = gs.gltf.Scene(
+        [gs.gltf.DirectionalLight((1, 1, 1), 2.0, (0, 0, -1))], gs.gltf.Material()
+    )
+    for lit in (None, scene):
+        ours = gs.render(MESH, lit, texture=image, uv=UV, texture_filter="linear", **SIZE)
+        expected = gs.render(
+            MESH, lit, texture=rgba32f(image), uv=UV, texture_filter="linear", **SIZE
+        )
+        np.testing.assert_array_equal(ours, expected)
+
+
+def test_textures_are_read_in_place() -> None:
+    """Arrays of the four stored types reach the renderer without a copy, a grey one as a
+    view with a channel axis; a strided or big-endian one is copied once into order."""
+    from glshade._texture import texels
+
+    for dtype in (np.uint8, np.uint16, np.float32, np.float64):
+        image = np.zeros((4, 3, 3), dtype)
+        assert np.shares_memory(texels(image), image)
+        grey = np.zeros((4, 3), dtype)
+        assert np.shares_memory(texels(grey), grey)
+    strided = np.zeros((4, 6, 4), np.uint8)[:, ::2]
+    assert texels(strided).flags.c_contiguous
+    swapped = np.arange(12, dtype=">u2").reshape(2, 2, 3)
+    np.testing.assert_array_equal(texels(swapped), swapped.astype(np.uint16))
+
+
 @pytest.mark.parametrize(
     ("kwargs", "error", "message"),
     [
