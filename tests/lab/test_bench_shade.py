@@ -383,6 +383,7 @@ def test_the_streaming_floor_reads_and_writes_what_shade_does(dtype: type) -> No
         ["bench", "normals", "--faces", "1"],
         ["bench", "normals", "--settle", "-1"],
         ["bench", "render", "--size", "0"],
+        ["bench", "render", "--scenes", "torus,sphere"],
         ["report", "--vertices", "0"],
         ["report", "--isa", "sse"],
         ["report", "--compare", "one.json"],  # two files

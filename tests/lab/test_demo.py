@@ -81,7 +81,8 @@ def test_bench_render_runs_beside_llvmpipe(tmp_path: Path) -> None:
 
     require("moderngl")
     path = tmp_path / "render.json"
-    args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2", "--json"]
+    args = ["bench", "render", "--faces", "2000", "--size", "96", "--repeat", "2", "--scenes"]
+    args += ["torus", "--json"]
     args.append(str(path))
     run = subprocess.run(
         [sys.executable, "-m", "glshade", *args],
@@ -96,4 +97,5 @@ def test_bench_render_runs_beside_llvmpipe(tmp_path: Path) -> None:
         assert float(line[0].rstrip("%")) > 99.0, line  # the same picture, pixel for pixel
     saved = json.loads(path.read_text())
     assert saved["bench"] == "render" and saved["settings"]["size"] == 96
-    assert min(saved["results"]["agreeing_pixels"].values()) > 0.99
+    assert saved["settings"]["scenes"] == ["torus"] and list(saved["results"]) == ["torus"]
+    assert min(saved["results"]["torus"]["agreeing_pixels"].values()) > 0.99

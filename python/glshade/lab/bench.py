@@ -193,9 +193,76 @@ class LlvmpipeRenderer:
         return image.reshape(self.size, self.size, 4)[::-1]
 
 
-def bench_render(faces: int, size: int, repeat: int, json_path: str | None = None) -> int:
-    """Prints (and saves at `json_path`) the median time of `gs.render` and of moderngl on
-    Mesa's llvmpipe for each shading, with the per-round speed-ups and the pixels that agree."""
+RENDER_PARTS = ("torus", "pyrender", "texture")
+
+
+def bench_render(
+    faces: int,
+    size: int,
+    repeat: int,
+    json_path: str | None = None,
+    parts: tuple[str, ...] = RENDER_PARTS,
+) -> int:
+    """Prints (and saves at `json_path`) each part of the render bench: a torus beside
+    moderngl on Mesa's llvmpipe (``torus``), pyrender scenes beside pyrender's own renderer
+    (``pyrender``), and a small render with textures of growing size (``texture``)."""
+    print(describe(machine()))
+    results: dict[str, Any] = {}
+    if "torus" in parts:
+        results["torus"] = _bench_torus(faces, size, repeat)
+    if "pyrender" in parts:
+        from .bench_pyrender import bench_pyrender
+
+        print()
+        results["pyrender"] = bench_pyrender(size, repeat)
+    if "texture" in parts:
+        print()
+        results["texture"] = bench_texture(repeat)
+    settings = {"faces": faces, "size": size, "rounds": repeat, "scenes": list(parts)}
+    save(json_path, "render", settings, results)
+    return 0
+
+
+# Texture sides of the texture part: the render is 64 x 64 whatever the texture's size.
+TEXTURE_SIDES = (1024, 4096, 8192)
+# Calls per turn of the texture part, the fastest counting: a call takes under a millisecond.
+TEXTURE_BURST = 20
+
+
+def bench_texture(repeat: int) -> dict[str, Any]:
+    """The median time of a 64 x 64 render of a textured quad, uint8 RGBA textures of each
+    side in `TEXTURE_SIDES` (after a first call of each), and the ratio of each to the first:
+    a texture is read in place, so the time should grow with its size only as far as its
+    texels fall out of the caches."""
+    v = np.array([[-1, -1, 0], [1, -1, 0], [1, 1, 0], [-1, 1, 0]], np.float64)
+    f, uv = [[0, 1, 2], [0, 2, 3]], v[:, :2] * 0.5 + 0.5
+    camera = gs.Camera.look_at((0, 0, 3), (0, 0, 0), (0, 1, 0))
+    rng = np.random.default_rng(0)
+    methods: dict[str, Callable[[], Any]] = {}
+    for side in TEXTURE_SIDES:
+        texture = rng.integers(0, 256, (side, side, 4), dtype=np.uint8)
+        methods[f"{side}x{side}"] = functools.partial(
+            gs.render, v, f, gs.Scene(), camera, width=64, height=64, texture=texture, uv=uv
+        )
+    times = time_rounds(methods, repeat, burst=TEXTURE_BURST)
+    first = next(iter(times))
+    print(
+        f"a 64x64 render of a quad with a uint8 RGBA texture, {repeat} rounds, the fastest of "
+        f"{TEXTURE_BURST} calls a turn"
+    )
+    print(f"\n  {'texture':12} {'median':>10} {'over ' + first:>16}")
+    results: dict[str, Any] = {"ms": {}, "over_first": {}}
+    for name, t in times.items():
+        r = ratio(times[name], times[first])
+        print(f"  {name:12} {t.median * 1e3:7.2f} ms {r.median:15.2f}x")
+        results["ms"][name] = t.as_dict(1e3)
+        results["over_first"][name] = r.as_dict()
+    return results
+
+
+def _bench_torus(faces: int, size: int, repeat: int) -> dict[str, Any]:
+    """The median time of `gs.render` and of moderngl on Mesa's llvmpipe for each shading,
+    with the per-round speed-ups and the pixels that agree."""
     from ..meshes import torus
     from .demo import demo_camera, demo_scene
 
@@ -205,7 +272,6 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
     v, f = mesh
     v32, normals = v.astype(np.float32), gs.vertex_normals(v, f).astype(np.float32)
     scene, camera = demo_scene(), demo_camera()
-    print(describe(machine()))
     print(
         f"a torus of {len(f):,} triangles ({len(v):,} vertices), {size}x{size}, float32; "
         f"{len(scene.lights)} lights; {repeat} rounds, each method once per round"
@@ -234,11 +300,13 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
     print(f"\n  {'method':24} {'median':>10}")
     for name, t in times.items():
         print(f"  {name:24} {t.median * 1e3:7.1f} ms")
-    settings = {"faces": len(f), "vertices": len(v), "size": size, "rounds": repeat}
-    saved: dict[str, Any] = {"ms": {k: t.as_dict(1e3) for k, t in times.items()}}
+    saved: dict[str, Any] = {
+        "faces": len(f),
+        "vertices": len(v),
+        "ms": {k: t.as_dict(1e3) for k, t in times.items()},
+    }
     if llvmpipe is None:
-        save(json_path, "render", settings, saved)
-        return 0
+        return saved
     print("\n  shading   pixels within 1e-4 of llvmpipe   speed-up (median of per-round ratios)")
     saved["agreeing_pixels"], saved["speedup_over_llvmpipe"] = {}, {}
     for shading in ("flat", "gouraud", "phong"):
@@ -249,5 +317,4 @@ def bench_render(faces: int, size: int, repeat: int, json_path: str | None = Non
         print(f"  {shading:8} {agreeing:28.3%}   {r.median:10.2f}x")
         saved["agreeing_pixels"][shading] = float(agreeing)
         saved["speedup_over_llvmpipe"][shading] = r.as_dict()
-    save(json_path, "render", settings, saved)
-    return 0
+    return saved

@@ -51,6 +51,18 @@ def _names(text: str) -> list[str]:
     return names
 
 
+def _render_parts(text: str) -> list[str]:
+    from .bench import RENDER_PARTS
+
+    parts = _names(text)
+    unknown = [p for p in parts if p not in RENDER_PARTS]
+    if unknown:
+        raise argparse.ArgumentTypeError(
+            f"unknown part {unknown[0]!r}: the parts are {', '.join(RENDER_PARTS)}"
+        )
+    return parts
+
+
 def _scenes(text: str) -> list[str]:
     from .scenes import scene_names
 
@@ -134,6 +146,14 @@ def _parser() -> argparse.ArgumentParser:
     render = which.add_parser("render", help="gs.render beside moderngl on Mesa's llvmpipe")
     render.add_argument("--faces", type=_at_least_two, default=100_000, help="default 10^5")
     render.add_argument("--size", type=_positive, default=1024, help="image size (default 1024)")
+    render.add_argument(
+        "--scenes",
+        type=_render_parts,
+        default="torus,pyrender,texture",
+        help="which parts, comma-separated: torus (beside moderngl on llvmpipe), pyrender "
+        "(pyrender scenes beside pyrender's OffscreenRenderer), texture (textures of growing "
+        "size); default all three",
+    )
     cluster = which.add_parser(
         "cluster", help="glshade.dask on a LocalCluster beside one gs.shade call, memmap to memmap"
     )
@@ -259,7 +279,9 @@ def main(argv: Sequence[str] | None = None) -> int:
             except (ValueError, RuntimeError) as error:  # a build that does not import or run
                 parser.error(str(error))
         if args.what == "render":
-            return bench.bench_render(args.faces, args.size, args.repeat, args.json)
+            return bench.bench_render(
+                args.faces, args.size, args.repeat, args.json, tuple(args.scenes)
+            )
         if args.what == "relief":
             from .bench_relief import bench_relief
 
