@@ -257,8 +257,9 @@ pub fn render<T: Real, M: RenderModel>(
 
 /// Renders `draws` into one frame as [`render`] renders one mesh: every draw's triangles
 /// depth-tested together in the order given (the first drawn wins a tie, as GL's `GL_LESS`),
-/// each placed by its own model matrix, lit by its own scene and culled by its own rule
-/// (`options.model` and `options.cull` are not read); the other options are the frame's.
+/// each placed by its own model matrix where its [`Placement`] says, lit by its own scene and
+/// culled by its own rule (`options.model` and `options.cull` are not read); the other options
+/// are the frame's.
 ///
 /// # Errors
 /// Those of [`render`], a mesh's prefixed with its index in `draws` when there are several;
@@ -308,7 +309,9 @@ pub fn render_draws<T: Real, M: RenderModel>(
         .iter()
         .map(|draw| match draw.placement {
             Placement::Model => Ok(None),
-            Placement::Vertices => place(&draw.mesh, draw.model, stop).map(Some),
+            Placement::Vertices => {
+                place(draw.mesh.vertices, draw.mesh.normals, draw.model, stop).map(Some)
+            }
         })
         .collect::<Result<Vec<_>, _>>()?;
     let placed_draws = draws

@@ -9,7 +9,6 @@ use crate::errors::stop::Stop;
 use crate::memory::pages::Zeroed;
 use crate::numbers::matrix::scaled_inverse;
 use crate::numbers::real::Real;
-use crate::render::mesh::Mesh;
 use crate::simd::float::ldexp;
 
 /// Rows per parallel task of the placement.
@@ -78,14 +77,16 @@ fn mapped<T: Real>(
     Ok(out)
 }
 
-/// `mesh`'s vertices and normals placed in world coordinates by the affine `model`, in `f64`
-/// and rounded to `T` ([`Placement::Vertices`]).
+/// A mesh's `vertices` and `normals` (one per vertex, or per face for flat shading) placed in
+/// world coordinates by the affine `model`, in `f64` and rounded to `T`
+/// ([`Placement::Vertices`]).
 ///
 /// # Errors
 /// A value error for a singular `model`; a memory error for the buffers, or
 /// [`Error::interrupted`].
 pub(crate) fn place<T: Real>(
-    mesh: &Mesh<'_, T>,
+    vertices: &[[T; 3]],
+    normals: Option<&[[T; 3]]>,
     model: DMat4,
     stop: &Stop,
 ) -> Result<Placed<T>, Error> {
@@ -101,11 +102,10 @@ pub(crate) fn place<T: Real>(
         at.y_axis * ldexp(1.0, top - e[1]),
         at.z_axis * ldexp(1.0, top - e[2]),
     );
-    let vertices = mapped(mesh.vertices, "the placed vertices", stop, |p| {
+    let vertices = mapped(vertices, "the placed vertices", stop, |p| {
         model.transform_point3(p)
     })?;
-    let normals = mesh
-        .normals
+    let normals = normals
         .map(|n| {
             mapped(n, "the placed normals", stop, |n| {
                 (normal_matrix * n).normalize_or_zero()
@@ -123,33 +123,25 @@ mod tests {
     fn vertices_are_placed_and_normals_made_unit() {
         let vertices = [[1.0_f64, 2.0, 3.0], [0.0, 0.0, 0.0]];
         let normals = [[0.0_f64, 0.0, 2.0], [0.0, 0.0, 0.0]];
-        let faces = [[0, 1, 0]];
-        let mesh = Mesh {
-            vertices: &vertices,
-            faces: &faces,
-            normals: Some(&normals),
-            colors: None,
-            textured: None,
-        };
         // A non-uniform scale then a translation: normals through the inverse transpose.
         let model = DMat4::from_translation(DVec3::new(1.0, 0.0, -1.0))
             * DMat4::from_scale(DVec3::new(2.0, 1.0, 0.5));
-        let placed = place(&mesh, model, &Stop::new()).unwrap();
+        let placed = place(&vertices, Some(&normals[..]), model, &Stop::new()).unwrap();
         assert_eq!(&*placed.vertices, &[[3.0, 2.0, 0.5], [1.0, 0.0, -1.0]]);
         let n = placed.normals.unwrap();
         assert_eq!(&*n, &[[0.0, 0.0, 1.0], [0.0, 0.0, 0.0]]);
         let tilted = [[1.0_f64, 0.0, 1.0], [0.0, 0.0, 1.0]];
-        let mesh = Mesh {
-            normals: Some(&tilted),
-            ..mesh
+        let placed_tilted = |model| {
+            let placed = place(&vertices, Some(&tilted[..]), model, &Stop::new()).unwrap();
+            placed.normals.unwrap()
         };
-        let n = place(&mesh, model, &Stop::new()).unwrap().normals.unwrap();
+        let n = placed_tilted(model);
         // (M⁻¹)ᵀ·(1, 0, 1) = (0.5, 0, 2), normalised.
         let expected = DVec3::new(0.5, 0.0, 2.0).normalize();
         assert!((DVec3::from_array(n[0]) - expected).length() < 1e-15);
         // Columns of very different scales: the plain inverse transpose's directions.
         let model = DMat4::from_rotation_y(0.7) * DMat4::from_scale(DVec3::new(1e3, 1.0, 1e-3));
-        let n = place(&mesh, model, &Stop::new()).unwrap().normals.unwrap();
+        let n = placed_tilted(model);
         let plain = DMat3::from_mat4(model).inverse().transpose();
         for (placed, given) in n.iter().zip(tilted) {
             let expected = (plain * DVec3::from_array(given)).normalize();
