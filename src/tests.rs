@@ -7,10 +7,12 @@
 //! gives finite output in [0, 1]; [`normal_range`]: normals of any length; [`property`]:
 //! properties of `shade` over generated scenes; [`robust`]: every entry point stops when asked,
 //! and sizes beyond memory are errors, not aborts; [`machine_code`]: the SIMD kernels call no
-//! function but their cold paths; [`world`]: what every world model does alike.
+//! function but their cold paths; [`world`]: what every world model does alike; [`lean`]: float32's
+//! lean arithmetic within the fast mode's bound.
 
 mod cycles;
 mod layers;
+mod lean;
 mod machine_code;
 mod normal_range;
 mod property;

@@ -23,10 +23,10 @@ use crate::numbers::real::Real;
 use crate::simd::dispatch::Isa;
 use crate::tests::support::vertices;
 
-const FEATURES: u32 = 14;
+pub(crate) const FEATURES: u32 = 14;
 
 /// The scene and options of feature subset `bits` (bit k on = feature k present).
-fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
+pub(crate) fn scene_of(bits: u32) -> (Scene, ShadeOptions) {
     let on = |k: u32| bits >> k & 1 == 1;
     let ambient = if on(13) {
         [0.1, 0.05, 0.2, 1.0]

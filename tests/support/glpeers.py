@@ -350,8 +350,9 @@ def float32_tolerance(
     gl_pow: bool = True,
 ) -> Float32Tolerance:
     """The `Float32Tolerance` of the inputs `gl_reference.gl_lighting` sees as `ref`; without
-    `gl_pow` (a peer that forms the powers as glshade does, glshade.glsl) the bound is the flat
-    ``tol * max(1, sum |terms|)``."""
+    `gl_pow` (a peer that forms the powers as glshade's careful path does, glshade.glsl) the
+    bound is ``tol * max(1, sum |terms|)`` and the plain power's 4u s |specular term| of
+    glshade's own float32 fast mode."""
     import copy
 
     from support.gl_reference import gl_lighting
@@ -390,7 +391,9 @@ def float32_tolerance(
             spec = np.abs(terms[2 * side + 1][:, :3]).max(axis=1)
             power_sum += float(material["shininess"]) * spec
             largest_power = np.maximum(largest_power, powers[2 * side + 1][:, 0])
-    bound = tol * np.maximum(1.0, reference.magnitude)
+    # glshade's own float32 fast mode forms the power plainly where it can (its lean
+    # arithmetic): 4u s |specular term| of its bound (the Accuracy page).
+    bound = tol * np.maximum(1.0, reference.magnitude) + 4 * u * power_sum
     if gl_pow:
         bound = bound + 16 * u * reference.sensitivity + 2 * u * power_sum
     comparable = (reference.margin > margin) & (largest_power < np.finfo(np.float32).max / 64)

@@ -45,11 +45,14 @@ class MpVertex:
     """The unclamped RGB of one vertex and the scales its rounding error is relative to:
     `magnitude`, the largest sum of |terms| over the channels; `sensitivity`, the largest sum
     over the channels of (s tan(theta) + e tan(phi)) |term| (the condition numbers of the
-    specular power cos^s and the spot power cos^e)."""
+    specular power cos^s and the spot power cos^e); `powered`, the largest sum over the channels
+    of s |specular term|, the scale of a plain float32 power's error (s times the rounding of
+    its base), which the fast float32 mode's bound allows."""
 
     rgb: list[float]
     magnitude: float
     sensitivity: float
+    powered: float = 0.0
 
 
 def mp_vertex(
@@ -77,6 +80,7 @@ def mp_vertex(
     total = [e + a * g for e, a, g in zip(e_cm, a_cm, acs, strict=True)]
     magnitude = [abs(t) for t in total]
     sensitivity = [mp.mpf(0)] * 3
+    powered = [mp.mpf(0)] * 3
     for given in lights:
         light = {**GL_LIGHT0, **given}
         P = _v(light["position"])
@@ -125,4 +129,10 @@ def mp_vertex(
             sensitivity[k] += srm * tan_theta * abs(spec) + spot_cond * (
                 sum(abs(t) for t in terms) + abs(spec)
             )
-    return MpVertex([float(t) for t in total], float(max(magnitude)), float(max(sensitivity)))
+            powered[k] += srm * abs(spec)
+    return MpVertex(
+        [float(t) for t in total],
+        float(max(magnitude)),
+        float(max(sensitivity)),
+        float(max(powered)),
+    )

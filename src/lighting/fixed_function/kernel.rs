@@ -22,10 +22,10 @@ use crate::gl::scene::Specular;
 use crate::lighting::block::{emit, Block, SideColors};
 use crate::lighting::clamp::ColorClamp;
 use crate::lighting::driver::BlockShader;
-use crate::lighting::fixed_function::plan::{LightKind, Plan};
+use crate::lighting::fixed_function::plan::{LightKind, LightPlan, Plan};
 use crate::lighting::fixed_function::power::{
-    cos_pow, half_even_exponent, halfway_even_pow, halfway_pow, normal_scale, spot_factor,
-    squared_minus_one, sum_exact, Scale,
+    cos_pow, half_even_exponent, halfway_even_pow, halfway_pow, normal_scale, plain_pow,
+    spot_factor, squared_minus_one, sum_exact, Scale,
 };
 use crate::lighting::fixed_function::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::lighting::fixed_function::shape::{flag, General, Shape};
@@ -72,11 +72,26 @@ fn attenuation<V: Lanes>(k: [V::T; 3], d: V) -> V {
 }
 
 /// `w · factor` for w ≥ 0 and factor > 0 (in the lanes that use it), saturated: a product of
-/// two finite values, so at worst +inf before the clamp, never NaN.
+/// two finite values, so at worst +inf before the clamp, never NaN. `LEAN`: the product alone
+/// (the lean path's checks keep both factors far inside the range).
 #[inline(always)]
-fn weight<V: Lanes>(w: V, factor: V) -> V {
+fn weight<V: Lanes, const LEAN: bool>(w: V, factor: V) -> V {
+    if LEAN {
+        return w * factor;
+    }
     (w * factor.min(V::splat(V::T::MAX))).min(V::splat(V::T::SATURATION))
 }
+
+/// The lanes where `x` lies in [`lo`, `hi`] (not NaN).
+#[inline(always)]
+fn within<V: Lanes>(x: V, lo: f64, hi: f64) -> V::Mask {
+    x.ge(V::splat(V::T::from_f64(lo))) & x.le(V::splat(V::T::from_f64(hi)))
+}
+
+/// The squared distances and distance–attenuation products the lean path takes, 2^-40 to
+/// 2^40: 1/d, att and att·spot then stay below 2^60, and with a power of at most 2^64
+/// ([`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`]) every weight below 2^124, finite in float32.
+const LEAN_RANGE: (f64, f64) = (9.094_947_017_729_282e-13, 1_099_511_627_776.0);
 
 /// `x` saturated at ±[`Float::SATURATION`] lane by lane.
 #[inline(always)]
@@ -246,11 +261,15 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
 
     /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i (finite: at most
     /// 1/`MIN_POSITIVE`).
+    ///
+    /// `LEAN`: 1/d and the attenuation from one division, 1/(d·(k0 + k1·d + k2·d²)), with no
+    /// guard; the lanes where d² or that product leave [`LEAN_RANGE`] are cleared in `held`.
     #[inline(always)]
-    fn light_at<V: Lanes<T = T>>(
+    fn light_at<V: Lanes<T = T>, const LEAN: bool>(
         light: &PreparedLight<T>,
         attenuated: bool,
         p: V3<V>,
+        held: &mut V::Mask,
     ) -> (V3<V>, V) {
         let kind = S::KNOWN.light_kind;
         match light.source {
@@ -265,11 +284,17 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 spot,
                 range,
             } => {
-                let (vp, d) = normalize_and_length_fast(V3::splat(position) - p);
-                let att = if flag(S::KNOWN.attenuated, attenuated) {
-                    attenuation(k, d)
+                let attenuated = flag(S::KNOWN.attenuated, attenuated);
+                let (vp, d, att) = if LEAN {
+                    Self::lean_distance(position, k, attenuated, p, held)
                 } else {
-                    V::splat(T::ONE)
+                    let (vp, d) = normalize_and_length_fast(V3::splat(position) - p);
+                    let att = if attenuated {
+                        attenuation(k, d)
+                    } else {
+                        V::splat(T::ONE)
+                    };
+                    (vp, d, att)
                 };
                 let cone = kind != Some(LightKind::Positional { spot: false });
                 let edges = S::KNOWN.edges != Some(false);
@@ -286,10 +311,55 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         }
     }
 
-    /// (n⊙ĥ)^s (Blinn) or (R⊙VP_e)^s (Phong); 0^0 = 1 whatever ĥ, and for s > 0 no specular
-    /// from a zero ĥ or a viewer at the vertex.
+    /// The lean path's VP, d and att_i of a positional light at `position` (attenuation `k`)
+    /// from the vertex `p`: one square root and one division. The lanes where d² leaves the
+    /// normal range, or with k1 or k2, where d² or d·(k0 + k1·d + k2·d²) leaves [`LEAN_RANGE`]
+    /// (a light at the vertex or far beyond the scene, a NaN position) are cleared in `held`.
     #[inline(always)]
-    fn specular_power<V: Lanes<T = T>>(
+    fn lean_distance<V: Lanes<T = T>>(
+        position: [T; 3],
+        k: [T; 3],
+        attenuated: bool,
+        p: V3<V>,
+        held: &mut V::Mask,
+    ) -> (V3<V>, V, V) {
+        let (lo, hi) = LEAN_RANGE;
+        let one = V::splat(T::ONE);
+        let l = V3::splat(position) - p;
+        let d2 = l.dot(l);
+        let d = d2.sqrt();
+        // Without a quotient only VP depends on d: the careful path's own range for it, so a
+        // scene scaled by a power of two keeps its path and its bits.
+        let mut inside = within(d2, T::MIN_POSITIVE.to_f64(), T::MAX.to_f64());
+        let (inverse, att) = if attenuated && (k[1] != T::ZERO || k[2] != T::ZERO) {
+            inside = inside & within(d2, lo, hi);
+            let mut den = V::splat(k[0]);
+            if k[1] != T::ZERO {
+                den = V::splat(k[1]).mul_add(d, den);
+            }
+            if k[2] != T::ZERO {
+                den = V::splat(k[2]).mul_add(d2, den);
+            }
+            let product = d * den;
+            inside = inside & within(product, lo, hi);
+            let r = one / product;
+            (r * den, r * d)
+        } else if attenuated {
+            // The careful path's 1/max(k0, MIN_POSITIVE), once per call (at most 2^60: the
+            // plan's condition for the lean path).
+            (one / d, V::splat(T::ONE / k[0].max(T::MIN_POSITIVE)))
+        } else {
+            (one / d, one)
+        };
+        *held = *held & inside;
+        (l.scale(inverse), d, att)
+    }
+
+    /// (n⊙ĥ)^s (Blinn) or (R⊙VP_e)^s (Phong); 0^0 = 1 whatever ĥ, and for s > 0 no specular
+    /// from a zero ĥ or a viewer at the vertex. `LEAN`: the plain power of the plain cosine
+    /// ([`Kernel::lean_power`]).
+    #[inline(always)]
+    fn specular_power<V: Lanes<T = T>, const LEAN: bool>(
         &self,
         light: &PreparedLight<T>,
         side: &SideNormal<V>,
@@ -300,6 +370,9 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     ) -> V {
         if s == T::ZERO {
             return V::splat(T::ONE);
+        }
+        if LEAN {
+            return self.lean_power(light, side.n, vp, view, n_dot_vp, s);
         }
         match flag(S::KNOWN.specular, self.prepared.specular) {
             Specular::Blinn => {
@@ -348,6 +421,53 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         }
     }
 
+    /// The lean path's specular power for s > 0: [`plain_pow`] of max(n·ĥ, 0) for a constant
+    /// ĥ; of (n·g)²/|g|² to s/2 for an even s and g = VP + VP_e (no ĥ, as the careful
+    /// path), else of max(n·g, 0)/|g|; Phong's of max(R·VP_e, 0), R = 2(n·VP)n − VP, divided
+    /// by |R| with `normalize` (GL's R is unit then; without it GL takes R as it is).
+    #[inline(always)]
+    fn lean_power<V: Lanes<T = T>>(
+        &self,
+        light: &PreparedLight<T>,
+        n: V3<V>,
+        vp: V3<V>,
+        view: V3<V>,
+        n_dot_vp: V,
+        s: T,
+    ) -> V {
+        let zero = V::splat(T::ZERO);
+        if flag(S::KNOWN.specular, self.prepared.specular) == Specular::Phong {
+            let r = n.scale(n_dot_vp + n_dot_vp) - vp;
+            let cos = if self.prepared.normalize {
+                // R is unit only to the rounding of n and VP, which s would multiply.
+                r.dot(view) / r.dot(r).sqrt()
+            } else {
+                r.dot(view)
+            };
+            return plain_pow(cos.max(zero), s);
+        }
+        if let Source::Directional {
+            halfway: Some(h), ..
+        } = light.source
+        {
+            return plain_pow(n.dot(V3::splat(h.direction)).max(zero), s);
+        }
+        let constant = LightKind::Directional {
+            constant_halfway: true,
+        };
+        if S::KNOWN.light_kind == Some(constant) {
+            return zero;
+        }
+        let g = vp + view;
+        let n_dot_g = n.dot(g);
+        // A zero g (VP = −VP_e) has n·g = 0: no specular, as the careful path's.
+        let g2 = g.dot(g).max(V::splat(T::MIN_POSITIVE));
+        match half_even_exponent(s) {
+            Some(half) => plain_pow(n_dot_g * n_dot_g / g2, half).or_zero(n_dot_g.gt(zero)),
+            None => plain_pow((n_dot_g / g2.sqrt()).max(zero), s),
+        }
+    }
+
     /// One colour of the material of `side` (0 front, 1 back) as RGBA lanes: `slot` 0 is the
     /// ambient, 1 the diffuse, 2 the specular and 3 the emission colour; the vertex colour where
     /// `GL_COLOR_MATERIAL` tracks it. One colour at a time: an array of all four would be
@@ -379,7 +499,8 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// `side` (0 front, 1 back, whose normal `normal` is already negated): ambient, diffuse
     /// and specular.
     #[inline(always)]
-    fn sums<V: Lanes<T = T>, const GREY: bool>(
+    #[allow(clippy::too_many_arguments)]
+    fn sums<V: Lanes<T = T>, const GREY: bool, const LEAN: bool>(
         &self,
         lights: &[PreparedLight<T>],
         first: usize,
@@ -387,6 +508,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         normal: &SideNormal<V>,
         side: usize,
         view: V3<V>,
+        held: &mut V::Mask,
     ) -> [V3<V>; 3] {
         let (prepared, plan) = (self.prepared, self.plan);
         let zero = V::splat(T::ZERO);
@@ -399,21 +521,25 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         // `simd::lanes::each`), and the slices' equal lengths drop the bounds checks.
         for i in 0..lights.len() {
             let (light, lp) = (&lights[i], &light_plans[i]);
-            let (vp, w) = Self::light_at(light, lp.attenuated, p);
+            let (vp, w) = Self::light_at::<V, LEAN>(light, lp.attenuated, p, held);
             if flag(S::KNOWN.light_ambient, lp.ambient) {
-                let weight = w.min(V::splat(T::SATURATION));
+                let weight = if LEAN {
+                    w
+                } else {
+                    w.min(V::splat(T::SATURATION))
+                };
                 ambient = add_scaled_as::<V, GREY>(ambient, light.ambient, weight);
             }
             let n_dot_vp = normal.n.dot(vp);
             // f_i: no diffuse and no specular unless n·VP > 0 (a select, never a 0· mask).
             let lit = n_dot_vp.gt(zero);
             if lit_all || lp.diffuse {
-                let weight = weight(w, n_dot_vp).or_zero(lit);
+                let weight = weight::<V, LEAN>(w, n_dot_vp).or_zero(lit);
                 diffuse = add_scaled_as::<V, GREY>(diffuse, light.diffuse, weight);
             }
             if lit_all || (lp.specular && side_plan.specular) {
                 let power = if lit_all || side_plan.power {
-                    self.specular_power(light, normal, vp, view, n_dot_vp, s)
+                    self.specular_power::<V, LEAN>(light, normal, vp, view, n_dot_vp, s)
                 } else {
                     V::splat(T::ONE)
                 };
@@ -424,7 +550,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 } else {
                     !(normal.n.is_zero() | vp.is_zero())
                 };
-                let weight = weight(w, power).or_zero(gate);
+                let weight = weight::<V, LEAN>(w, power).or_zero(gate);
                 specular = add_scaled_as::<V, GREY>(specular, light.specular, weight);
             }
         }
@@ -434,14 +560,16 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// The light sums of every light, saturated: in blocks of [`Float::SUM_BLOCK`] lights
     /// summed in `T` (within ½ ulp of Σ|terms| per light), the blocks' sums saturated and added
     /// with their rounding errors kept apart ([`Compensated`]), so the error is `SUM_BLOCK` ulp
-    /// of Σ|terms| whatever the light count.
+    /// of Σ|terms| whatever the light count. `LEAN`: the same sums, unsaturated (the caller
+    /// checks them).
     #[inline(always)]
-    fn all_sums<V: Lanes<T = T>, const GREY: bool>(
+    fn all_sums<V: Lanes<T = T>, const GREY: bool, const LEAN: bool>(
         &self,
         p: V3<V>,
         normal: &SideNormal<V>,
         side: usize,
         view: V3<V>,
+        held: &mut V::Mask,
     ) -> [V3<V>; 3] {
         let lights = &self.prepared.lights;
         let sums = if flag(S::KNOWN.few_lights, lights.len() <= T::SUM_BLOCK) {
@@ -449,10 +577,15 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             // registers, not memory (one directional light 1.2 times as fast on a Zen 2). One
             // call per length, so that each call's slice has a constant length to unroll.
             let one_kind = S::KNOWN.light_kind.is_some();
+            let (p, n) = (p, normal);
             match lights.len() {
-                1 if one_kind => self.sums::<V, GREY>(&lights[..1], 0, p, normal, side, view),
-                2 if one_kind => self.sums::<V, GREY>(&lights[..2], 0, p, normal, side, view),
-                _ => self.sums::<V, GREY>(lights, 0, p, normal, side, view),
+                1 if one_kind => {
+                    self.sums::<V, GREY, LEAN>(&lights[..1], 0, p, n, side, view, held)
+                }
+                2 if one_kind => {
+                    self.sums::<V, GREY, LEAN>(&lights[..2], 0, p, n, side, view, held)
+                }
+                _ => self.sums::<V, GREY, LEAN>(lights, 0, p, n, side, view, held),
             }
         } else {
             let empty = Compensated {
@@ -461,16 +594,21 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             };
             let mut sums = [empty; 3];
             for (b, chunk) in lights.chunks(T::SUM_BLOCK).enumerate() {
-                let part = self.sums::<V, GREY>(chunk, b * T::SUM_BLOCK, p, normal, side, view);
+                let first = b * T::SUM_BLOCK;
+                let part = self.sums::<V, GREY, LEAN>(chunk, first, p, normal, side, view, held);
                 for (sum, part) in sums.iter_mut().zip(part) {
-                    // Saturated, so no partial total overflows (inf − inf would be NaN).
-                    *sum = sum.add(sat3(part));
+                    // Saturated, so no partial total overflows (inf − inf would be NaN; the
+                    // lean path's check of the sums sends such a block to the careful path).
+                    *sum = sum.add(if LEAN { part } else { sat3(part) });
                 }
             }
             // Not `sums.map(..)`, whose additions became calls (see `simd::lanes::each`).
             let [a, d, s] = sums;
             [a.rounded(), d.rounded(), s.rounded()]
         };
+        if LEAN {
+            return sums;
+        }
         let ambient = if self.any_ambient() {
             sat3(sums[0])
         } else {
@@ -480,34 +618,37 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     }
 
     /// The colours of one side of a block whose front normal is `front`: the light sums, the
-    /// material and the clamp ([`Kernel::block`] after the normal).
+    /// material and the clamp ([`Kernel::block`] after the normal). `LEAN`: with the lean
+    /// arithmetic, the lanes it does not hold cleared in `held`.
     #[inline(always)]
-    fn side_colors<V: Lanes<T = T>>(
+    fn side_colors<V: Lanes<T = T>, const LEAN: bool>(
         &self,
         p: V3<V>,
         front: SideNormal<V>,
         colors: Option<[V; 4]>,
         finite: V::Mask,
         side: usize,
+        held: &mut V::Mask,
     ) -> SideColors<V> {
         // Grey lights sum one channel (8 mixed and 32 point lights 1.1 times as fast on a Zen 2).
         if Self::sums_grey(self.plan) {
-            self.side_colors_as::<V, true>(p, front, colors, finite, side)
+            self.side_colors_as::<V, true, LEAN>(p, front, colors, finite, side, held)
         } else {
-            self.side_colors_as::<V, false>(p, front, colors, finite, side)
+            self.side_colors_as::<V, false, LEAN>(p, front, colors, finite, side, held)
         }
     }
 
     /// [`Kernel::side_colors`], its light sums of one channel for `GREY` lights
     /// ([`add_scaled_as`]).
     #[inline(always)]
-    fn side_colors_as<V: Lanes<T = T>, const GREY: bool>(
+    fn side_colors_as<V: Lanes<T = T>, const GREY: bool, const LEAN: bool>(
         &self,
         p: V3<V>,
         front: SideNormal<V>,
         colors: Option<[V; 4]>,
         finite: V::Mask,
         side: usize,
+        held: &mut V::Mask,
     ) -> SideColors<V> {
         let (prepared, plan) = (self.prepared, self.plan);
         let normal = if side == 0 {
@@ -525,7 +666,20 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             Viewer::Local(e) if local && plan.view => normalize_or_zero_fast(V3::splat(e) - p),
             Viewer::Local(_) => V3::zero(),
         };
-        let [ambient, diffuse, specular] = self.all_sums::<V, GREY>(p, &normal, side, view);
+        let sums = self.all_sums::<V, GREY, LEAN>(p, &normal, side, view, held);
+        if LEAN {
+            // Unsaturated sums must stay where the careful path's saturation would not act.
+            let top = T::SATURATION.to_f64();
+            let first = usize::from(!self.any_ambient());
+            for sum in &sums[first..] {
+                let mut inside = within(sum.x, -top, top);
+                if !GREY {
+                    inside = inside & within(sum.y, -top, top) & within(sum.z, -top, top);
+                }
+                *held = *held & inside;
+            }
+        }
+        let [ambient, diffuse, specular] = sums;
 
         let d = self.material(side, 1, colors);
         let alpha = d[3];
@@ -557,16 +711,8 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         }
     }
 
-    /// The colours of one side of a block from its eye-space normals `n`, the front normal
-    /// formed as the plan needs it. The directional shape's float32 kernel (every ĥ constant)
-    /// runs a block whose normals are all near unit length (|n|² in [½, 2]: nearly every
-    /// block) in its own copy of the rest, where the scale is |n|² − 1 alone and its `near` a
-    /// constant: the powers' tests of it fold away, and with them n̂, ln |n| and the exp and
-    /// ln paths, which leaves the registers to the light (one and two directional lights 1.09
-    /// and 1.12 times as fast on a Zen 2). Both copies run the operations such a block takes,
-    /// so the bits are the same. The other kernels keep one copy, for the build's time: a copy
-    /// in every kernel made the `timing` build take 13 minutes instead of 2, and the float64
-    /// kernel's copy, never timed, cost the tests' build minutes.
+    /// The colours of one side of a block from its eye-space normals `n` by the careful
+    /// arithmetic, the front normal formed as the plan needs it.
     #[inline(always)]
     fn lit_block<V: Lanes<T = T>>(
         &self,
@@ -592,23 +738,62 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 scale: Scale::unit(),
             }
         } else {
-            let constant_halfway = LightKind::Directional {
-                constant_halfway: true,
-            };
-            let copy = S::KNOWN.light_kind == Some(constant_halfway) && Self::FLOAT32;
             let (squared, near) = squared_minus_one(n);
-            if copy && !plan.unit_normal && near.all() {
-                let front = SideNormal {
-                    n,
-                    unit: n,
-                    scale: Scale::squared_only(squared),
-                };
-                return self.side_colors(p, front, colors, finite, side);
-            }
             let (unit, scale) = normal_scale(n, squared, near, plan.unit_normal);
             SideNormal { n, unit, scale }
         };
-        self.side_colors(p, front, colors, finite, side)
+        let mut held = V::Mask::splat(true);
+        self.side_colors::<V, false>(p, front, colors, finite, side, &mut held)
+    }
+
+    /// The colours of one side of a block by the lean arithmetic, or `None` where a lane needs
+    /// the careful path: every normal (`n`, whose |n|² is `n2`) in the lean band, finite vertex
+    /// colours, every light's distance in [`LEAN_RANGE`] and finite, unsaturated light sums.
+    /// No saturation, no exact squares, no compensated sum: plain float32 arithmetic, within
+    /// the fast mode's bound (|n|² in [½, 2], or [½, 1.2] for Phong's R, keeps every power of
+    /// an exponent up to [`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`] below 2^64).
+    #[inline(always)]
+    fn lean_block<V: Lanes<T = T>>(
+        &self,
+        p: V3<V>,
+        n: V3<V>,
+        n2: V,
+        colors: Option<[V; 4]>,
+        side: usize,
+    ) -> Option<SideColors<V>> {
+        let prepared = self.prepared;
+        let phong = flag(S::KNOWN.specular, prepared.specular) == Specular::Phong;
+        let band = match (prepared.normalize, phong) {
+            (true, _) => LEAN_RANGE,
+            (false, true) => (0.5, 1.2),
+            (false, false) => (0.5, 2.0),
+        };
+        let mut held = within(n2, band.0, band.1);
+        if let Some(c) = &colors {
+            held = held & c[0].is_finite() & c[1].is_finite();
+            held = held & c[2].is_finite() & c[3].is_finite();
+        }
+        // A position read only by a local viewer (a positional light's distance checks its own).
+        if self.reads_positions() && !self.plan.lights.iter().copied().any(LightPlan::positional) {
+            held = held & p.is_finite();
+        }
+        if !held.all() {
+            return None;
+        }
+        let n = if prepared.normalize {
+            // As the careful path's: a unit normal to ½ ulp per component, which s multiplies.
+            normalize_and_length(n).0
+        } else {
+            n
+        };
+        let front = SideNormal {
+            n,
+            unit: n,
+            scale: Scale::unit(),
+        };
+        let finite = V::Mask::splat(true);
+        let colours = self.side_colors::<V, true>(p, front, colors, finite, side, &mut held);
+        held.all().then_some(colours)
     }
 
     /// [`Kernel::block`]'s eye-space normals N·n for a block with a lane whose N·n is not
@@ -693,8 +878,14 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
                 }
             }
         }
+        let n2 = n.dot(n);
+        if Self::FLOAT32 && self.plan.lean {
+            if let Some(colours) = self.lean_block(p, n, n2, colors, side) {
+                return colours;
+            }
+        }
         // Saturation: |N·n|² ≤ 1/MIN_POSITIVE (|N·n| ≤ 2^63 in f32, 2^511 in f64), else rescaled.
-        let in_range = n.dot(n).le(V::splat(T::ONE / T::MIN_POSITIVE));
+        let in_range = n2.le(V::splat(T::ONE / T::MIN_POSITIVE));
         let mut finite = if in_range.all() {
             in_range
         } else {

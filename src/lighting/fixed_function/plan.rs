@@ -14,6 +14,14 @@ use crate::lighting::fixed_function::prepare::{Prepared, Source, Viewer};
 use crate::lighting::model::write_reads;
 use crate::numbers::real::Real;
 
+/// The largest shininess the lean arithmetic takes: (n·ĥ)^s of a normal with |n|² ≤ 2 stays
+/// below 2^64.
+pub const LEAN_EXPONENT_MAX: f64 = 128.0;
+
+/// The least constant attenuation k0 of a light without k1 and k2 the lean arithmetic takes,
+/// 2^-60: its attenuation 1/k0 then stays below 2^60, as a distance in range gives.
+pub const LEAN_ATTENUATION_MIN: f64 = 8.673_617_379_884_035e-19;
+
 /// The terms one light contributes.
 #[allow(clippy::struct_excessive_bools)] // one flag per term, like Mesa's state key
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -38,6 +46,11 @@ impl LightPlan {
     /// The light has a range or a soft spot edge: not a GL light.
     pub fn edges(self) -> bool {
         self.range || self.soft_edge
+    }
+
+    /// The light is positional (a point or a spot).
+    pub fn positional(self) -> bool {
+        matches!(self.kind, LightKind::Positional { .. })
     }
 }
 
@@ -87,6 +100,10 @@ pub struct Plan {
     /// Every light's ambient, diffuse and specular colours are grey (r, g and b the same
     /// bits), so the light sums' three channels are the same numbers: a kernel may sum one.
     pub grey: bool,
+    /// A float32 kernel tries the lean arithmetic first, block by block (every shininess at
+    /// most [`LEAN_EXPONENT_MAX`], every constant attenuation at least
+    /// [`LEAN_ATTENUATION_MIN`]); the careful path runs the blocks it does not hold.
+    pub lean: bool,
 }
 
 impl Plan {
@@ -160,6 +177,16 @@ impl Plan {
                 .lights
                 .iter()
                 .all(|l| grey(&l.ambient) && grey(&l.diffuse) && grey(&l.specular)),
+            lean: prepared.materials[..sides_used]
+                .iter()
+                .all(|m| m.shininess.to_f64() <= LEAN_EXPONENT_MAX)
+                && prepared.lights.iter().all(|l| match l.source {
+                    // A constant attenuation 1/k0 of at most 2^60, as the distances give.
+                    Source::Positional { attenuation: k, .. } => {
+                        k[1] != T::ZERO || k[2] != T::ZERO || k[0].to_f64() >= LEAN_ATTENUATION_MIN
+                    }
+                    Source::Directional { .. } => true,
+                }),
         }
     }
 
@@ -172,7 +199,7 @@ impl Plan {
     /// specialised plans are checked against, bit for bit.
     #[cfg(test)]
     pub fn general<T: Real>(prepared: &Prepared<T>) -> Self {
-        let lean = Self::new(prepared);
+        let least = Self::new(prepared);
         let all = |light: &LightPlan| LightPlan {
             ambient: true,
             diffuse: true,
@@ -187,15 +214,16 @@ impl Plan {
             power: true,
         };
         Self {
-            lights: lean.lights.iter().map(all).collect(),
+            lights: least.lights.iter().map(all).collect(),
             sides: [side; 2],
             // What is read is not a choice of the plan: a NaN in an unread position must not
             // change the output (see `shade`), so the general plan reads the same arrays.
-            positions: lean.positions,
+            positions: least.positions,
             unit_normal: true,
             normal_length: !prepared.normalize,
             view: matches!(prepared.viewer, Viewer::Local(_)),
-            grey: lean.grey,
+            grey: least.grey,
+            lean: least.lean,
         }
     }
 }

@@ -373,6 +373,33 @@ fn complement_pow<V: Lanes>(c: V, k: u32) -> V {
     one - total.unwrap_or(V::splat(V::T::ZERO))
 }
 
+/// x^s for x ≥ 0 and s > 0 in plain arithmetic, the lean kernel's power: by squaring for the
+/// integers up to [`SQUARED_EXPONENT_MAX`], else `exp(s·ln x)` (0 at x = 0). It errs by about
+/// s times the rounding of x, which the fast mode's bound allows ([`complement_pow`] does not).
+#[inline(always)]
+pub fn plain_pow<V: ElementaryLanes>(x: V, s: V::T) -> V {
+    let Some(k) = squared_exponent(s) else {
+        let zero = V::splat(V::T::ZERO);
+        return (V::splat(s) * x.ln()).exp().or_zero(x.gt(zero));
+    };
+    let (mut base, mut e) = (x, k);
+    let mut total: Option<V> = None;
+    loop {
+        if e & 1 == 1 {
+            total = Some(match total {
+                None => base,
+                Some(t) => t * base,
+            });
+        }
+        e >>= 1;
+        if e == 0 {
+            break;
+        }
+        base = base * base;
+    }
+    total.unwrap_or(V::splat(V::T::ONE))
+}
+
 /// spot_i of eq. 2.5 for the unit light-to-vertex vectors `to_vertex` (P_pli→V): 0 outside the
 /// cone, `(to_vertex ⊙ ŝ)^exponent` inside, with the edge inside (`≥`) and 0^0 = 1; times
 /// clamp((cos θ − cos c_rli)/ε, 0, 1) with a soft edge (`soft`, and the spot has one).
