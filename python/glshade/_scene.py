@@ -603,7 +603,10 @@ class Scene(Model):
         scene does not need (a zero colour, shininess 0, no attenuation, no spot cone, a
         directional light's constant direction and halfway vector) is left out, with the same
         results bit for bit. In float32 it also says when the lights are grey (r = g = b) and the
-        kernel sums one colour channel for the three, again with the same results.
+        kernel sums one colour channel for the three, again with the same results, and which
+        path the fast mode runs first: lean float32 blocks (plain float32 arithmetic, the
+        careful path only where a vertex needs a safeguard) or, for a shininess above 128 or a
+        constant attenuation below 2⁻⁶⁰ alone, the careful path throughout.
 
         Parameters
         ----------
@@ -640,7 +643,7 @@ class Scene(Model):
         --------
         >>> import glshade as gs
         >>> print(gs.Scene(lights=[gs.Light()]).plan())  # doctest: +ELLIPSIS
-        fast: float32 arithmetic, ...; light 0 directional (VP, ĥ constant): diffuse
+        fast: float32 arithmetic, ...; light 0 directional (VP, ĥ constant): diffuse; lean ...
         """
         name = np.dtype(dtype).name
         if name not in ("float16", "float32", "float64"):

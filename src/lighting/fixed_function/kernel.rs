@@ -14,6 +14,11 @@
 //! finite input never meets `inf · 0` or `inf − inf`. Eye-space normals are saturated at
 //! 2^[`normal_exponent`] with their direction kept ([`Kernel::block`]), so a finite normal of
 //! any magnitude, under any normal matrix, lights finitely.
+//!
+//! That is the careful path. A float32 kernel first runs each block on the lean path, the same
+//! equation in plain float32 arithmetic (`LEAN`: plain powers, no saturation, 1/d and the
+//! attenuation from one division), and keeps its colours when every lane passed the lean
+//! path's checks (`Kernel::lean_block`); otherwise the block runs again on the careful path.
 
 use std::marker::PhantomData;
 
@@ -90,7 +95,8 @@ fn within<V: Lanes>(x: V, lo: f64, hi: f64) -> V::Mask {
 
 /// The squared distances and distance–attenuation products the lean path takes, 2^-40 to
 /// 2^40: 1/d, att and att·spot then stay below 2^60, and with a power of at most 2^64
-/// ([`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`]) every weight below 2^124, finite in float32.
+/// ([`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`]) every weight below 2^124,
+/// finite in float32.
 const LEAN_RANGE: (f64, f64) = (9.094_947_017_729_282e-13, 1_099_511_627_776.0);
 
 /// `x` saturated at ±[`Float::SATURATION`] lane by lane.
@@ -262,8 +268,8 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
     /// VP_pli (unit, or zero for a light at the vertex) and att_i·spot_i (finite: at most
     /// 1/`MIN_POSITIVE`).
     ///
-    /// `LEAN`: 1/d and the attenuation from one division, 1/(d·(k0 + k1·d + k2·d²)), with no
-    /// guard; the lanes where d² or that product leave [`LEAN_RANGE`] are cleared in `held`.
+    /// `LEAN`: 1/d and the attenuation from one division ([`Kernel::lean_distance`], which
+    /// clears in `held` the lanes out of its range).
     #[inline(always)]
     fn light_at<V: Lanes<T = T>, const LEAN: bool>(
         light: &PreparedLight<T>,

@@ -71,7 +71,7 @@ impl Model for ValidScene {
     }
 
     /// The accuracy, the arithmetic, the instruction set, the shape of kernel, the lanes per
-    /// block and the plan, with grey sums and an unclamped range named.
+    /// block and the plan, with grey sums, float32's path and an unclamped range named.
     fn describe<T: Real>(&self, options: &ShadeOptions) -> Result<String, Error> {
         let scene = self;
         let isa = Isa::detect();
@@ -96,9 +96,19 @@ impl Model for ValidScene {
         } else {
             ""
         };
+        // The plan's terms are those of both paths; float32 says which runs first.
+        let path = match (bytes, plan.lean) {
+            (4, true) => {
+                "; lean float32 blocks (the careful path where a vertex needs a safeguard)"
+            }
+            (4, false) => {
+                "; the careful path (a shininess above 128 or a constant attenuation below 2^-60)"
+            }
+            _ => "",
+        };
         Ok(format!(
             "{mode}: float{} arithmetic, {}, {shape} kernel, {lanes} vertices per block; \
-             {plan}{grey}{range}",
+             {plan}{grey}{path}{range}",
             bytes * 8,
             isa.name(),
         ))
