@@ -222,15 +222,21 @@ pub struct Kernel<'a, T: Real, S: Shape = General> {
     pub plan: &'a Plan,
     /// The shape.
     pub compiled: PhantomData<S>,
+    /// Positions are read by a local viewer alone, with no positional light whose distance
+    /// check would catch a non-finite one: the lean path checks them itself (once per call,
+    /// not per block).
+    viewer_reads_alone: bool,
 }
 
 impl<'a, T: Real, S: Shape> Kernel<'a, T, S> {
     /// The kernel of `prepared` and `plan` for shape `S`.
     pub fn new(prepared: &'a Prepared<T>, plan: &'a Plan) -> Self {
+        let positional = plan.lights.iter().copied().any(LightPlan::positional);
         Self {
             prepared,
             plan,
             compiled: PhantomData,
+            viewer_reads_alone: plan.positions && !positional,
         }
     }
 
@@ -780,7 +786,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             held = held & c[2].is_finite() & c[3].is_finite();
         }
         // A position read only by a local viewer (a positional light's distance checks its own).
-        if self.reads_positions() && !self.plan.lights.iter().copied().any(LightPlan::positional) {
+        if self.reads_positions() && self.viewer_reads_alone {
             held = held & p.is_finite();
         }
         if !held.all() {
