@@ -13,7 +13,7 @@ use crate::errors::stop::Stop;
 use crate::gl::vertex_colors::VertexColors;
 use crate::lighting::block::{Block, SideColors};
 use crate::memory::alloc::try_with_capacity;
-use crate::numbers::real::{BlockLanes, Real};
+use crate::numbers::real::{BlockLanes, Real, LEAN_GROUP};
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::Float;
 use crate::simd::lanes::{InstructionSet, Lanes, MAX_LANES, V3};
@@ -53,8 +53,24 @@ struct Task<'a, 'b, T: Real, S: BlockShader<T>> {
     planes: &'b mut [&'a mut [MaybeUninit<T>]],
 }
 
-/// The `V::N` rows of `a` from `first` as lanes; a short block of `valid` rows repeats its
-/// first row in the missing lanes (finite, and never written back).
+/// The row a short block of `valid` rows repeats in its missing lane `j`: the first row of the
+/// lane's [`LEAN_GROUP`] (finite, and never written back), so a group of a wide block holds what
+/// the same rows hold in a narrow one.
+#[inline(always)]
+fn padded_row(j: usize, valid: usize) -> usize {
+    if j < valid {
+        return j;
+    }
+    let group = j - j % LEAN_GROUP;
+    if group < valid {
+        group
+    } else {
+        0
+    }
+}
+
+/// The `V::N` rows of `a` from `first` as lanes; a short block of `valid` rows is padded
+/// ([`padded_row`]).
 #[inline(always)]
 fn rows<V: Lanes>(a: &[[V::T; 3]], first: usize, valid: usize) -> V3<V> {
     if valid == V::N {
@@ -62,7 +78,7 @@ fn rows<V: Lanes>(a: &[[V::T; 3]], first: usize, valid: usize) -> V3<V> {
     }
     let mut padded = [[V::T::ZERO; 3]; MAX_LANES];
     for (j, row) in padded.iter_mut().enumerate().take(V::N) {
-        *row = a[first + if j < valid { j } else { 0 }];
+        *row = a[first + padded_row(j, valid)];
     }
     V::load_rows3(&padded[..V::N])
 }
@@ -73,7 +89,7 @@ fn rows<V: Lanes>(a: &[[V::T; 3]], first: usize, valid: usize) -> V3<V> {
 fn color_rows<V: Lanes>(c: VertexColors<'_, V::T>, first: usize, valid: usize) -> [V; 4] {
     let mut planes = [[V::T::ONE; MAX_LANES]; 4];
     for j in 0..V::N {
-        let row = first + if j < valid { j } else { 0 };
+        let row = first + padded_row(j, valid);
         for (k, plane) in planes.iter_mut().enumerate().take(c.width) {
             plane[j] = c.data[row * c.width + k];
         }
@@ -99,26 +115,28 @@ fn store<V: Lanes>(rgba: [V; 4], plane: &mut [MaybeUninit<V::T>], start: usize, 
     }
 }
 
-impl<T: Real, S: BlockShader<T>> Task<'_, '_, T, S> {
-    /// Loads the block of rows starting at row `first` (absolute); a short last block of
-    /// `valid` rows is padded (see [`rows`]).
-    #[inline(always)]
-    fn load<V: Lanes<T = T>>(&self, first: usize, valid: usize) -> Block<V> {
-        let inputs = self.inputs;
-        Block {
-            positions: if self.kernel.reads_positions() {
-                rows(inputs.positions, first, valid)
-            } else {
-                V3::zero()
-            },
-            normals: rows(inputs.normals, first, valid),
-            // Not `Option::map`: a closure might stay out of line, without the target features.
-            #[allow(clippy::manual_map)]
-            colors: match inputs.colors {
-                Some(c) => Some(color_rows(c, first, valid)),
-                None => None,
-            },
-        }
+/// The block of `inputs`' rows starting at row `first` (positions only where `positions`;
+/// zeros otherwise); a short last block of `valid` rows is padded (see [`padded_row`]).
+#[inline(always)]
+pub(crate) fn load_block<V: Lanes>(
+    inputs: Inputs<'_, V::T>,
+    positions: bool,
+    first: usize,
+    valid: usize,
+) -> Block<V> {
+    Block {
+        positions: if positions {
+            rows(inputs.positions, first, valid)
+        } else {
+            V3::zero()
+        },
+        normals: rows(inputs.normals, first, valid),
+        // Not `Option::map`: a closure might stay out of line, without the target features.
+        #[allow(clippy::manual_map)]
+        colors: match inputs.colors {
+            Some(c) => Some(color_rows(c, first, valid)),
+            None => None,
+        },
     }
 }
 
@@ -139,7 +157,8 @@ impl<T: Real, S: BlockShader<T>> Task<'_, '_, T, S> {
         let mut start = 0;
         while start < count {
             let valid = V::N.min(count - start);
-            let block = self.load::<V>(self.first + start, valid);
+            let first = self.first + start;
+            let block = load_block::<V>(self.inputs, self.kernel.reads_positions(), first, valid);
             // Planes come side by side: the front's colours, then the back's. A loop over a
             // count the shape may fix, so one side compiles to straight code.
             for side in 0..sides {

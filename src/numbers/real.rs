@@ -21,6 +21,11 @@ pub trait Real: Float + Elementary {
     type Vector<S: InstructionSet>: Lanes<T = Self>;
 }
 
+/// The vertices float32's lean path decides together: a block of SSE2 and AVX2 (16 float32
+/// lanes), so AVX-512's blocks of 32 decide each group of 16 alone and every instruction set
+/// gives the same bits.
+pub const LEAN_GROUP: usize = 16;
+
 /// The lanes of one block of `T` under instruction set `S` ([`InstructionSet::Block`]): two
 /// registers with AVX-512 and AVX2, four with SSE2. Measured, one thread: on Zen 4, 2026-12-02,
 /// with AVX-512 two ran 1.2 to 1.4 times as fast as one in the shapes' kernels and as fast as

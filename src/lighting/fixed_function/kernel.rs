@@ -17,8 +17,9 @@
 //!
 //! That is the careful path. A float32 kernel first runs each block on the lean path, the same
 //! equation in plain float32 arithmetic (`LEAN`: plain powers, no saturation, 1/d and the
-//! attenuation from one division), and keeps its colours when every lane passed the lean
-//! path's checks (`Kernel::lean_block`); otherwise the block runs again on the careful path.
+//! attenuation from one division), and keeps the colours of each group of [`LEAN_GROUP`] lanes
+//! whose every lane passed the lean path's checks (`Kernel::lean_block`); the other groups take
+//! the careful path's colours. Groups, not blocks, so every block width gives the same bits.
 
 use std::marker::PhantomData;
 
@@ -35,7 +36,7 @@ use crate::lighting::fixed_function::power::{
 use crate::lighting::fixed_function::prepare::{Prepared, PreparedLight, Source, Viewer};
 use crate::lighting::fixed_function::shape::{flag, General, Shape};
 use crate::numbers::elementary::ElementaryLanes;
-use crate::numbers::real::Real;
+use crate::numbers::real::{Real, LEAN_GROUP};
 use crate::simd::dispatch::{Isa, LaneWork};
 use crate::simd::float::{ldexp, Float};
 use crate::simd::lanes::{
@@ -91,6 +92,23 @@ fn weight<V: Lanes, const LEAN: bool>(w: V, factor: V) -> V {
 #[inline(always)]
 fn within<V: Lanes>(x: V, lo: f64, hi: f64) -> V::Mask {
     x.ge(V::splat(V::T::from_f64(lo))) & x.le(V::splat(V::T::from_f64(hi)))
+}
+
+/// The lanes of `held` whose whole [`LEAN_GROUP`] is set: the lean path's colours of a group
+/// do not depend on the block around it. Off the common path (a block with a lane on the
+/// careful one), so by way of memory.
+#[inline(always)]
+fn whole_groups<V: Lanes>(held: V::Mask) -> V::Mask {
+    let bits = held.bitmask();
+    let width = LEAN_GROUP.min(V::N);
+    let mut whole = [V::T::ZERO; MAX_LANES];
+    for start in (0..V::N).step_by(width) {
+        let group = (u64::MAX >> (64 - width)) << start;
+        if bits & group == group {
+            whole[start..start + width].fill(V::T::ONE);
+        }
+    }
+    V::load(&whole).gt(V::splat(V::T::ZERO))
 }
 
 /// The squared distances and distance–attenuation products the lean path takes, 2^-40 to
@@ -758,12 +776,13 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         self.side_colors::<V, false>(p, front, colors, finite, side, &mut held)
     }
 
-    /// The colours of one side of a block by the lean arithmetic, or `None` where a lane needs
-    /// the careful path: every normal (`n`, whose |n|² is `n2`) in the lean band, finite vertex
-    /// colours, every light's distance in [`LEAN_RANGE`] and finite, unsaturated light sums.
-    /// No saturation, no exact squares, no compensated sum: plain float32 arithmetic, within
-    /// the fast mode's bound (|n|² in [½, 2], or [½, 1.2] for Phong's R, keeps every power of
-    /// an exponent up to [`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`] below 2^64).
+    /// The colours of one side of a block by the lean arithmetic and the lanes they hold for:
+    /// every normal (`n`, whose |n|² is `n2`) in the lean band, finite vertex colours, every
+    /// light's distance in [`LEAN_RANGE`] and finite, unsaturated light sums; `None` where the
+    /// normals and colours alone leave no [`LEAN_GROUP`] whole. No saturation, no exact squares,
+    /// no compensated sum: plain float32 arithmetic, within the fast mode's bound (|n|² in
+    /// [½, 2], or [½, 1.2] for Phong's R, keeps every power of an exponent up to
+    /// [`crate::lighting::fixed_function::plan::LEAN_EXPONENT_MAX`] below 2^64).
     #[inline(always)]
     fn lean_block<V: Lanes<T = T>>(
         &self,
@@ -772,7 +791,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         n2: V,
         colors: Option<[V; 4]>,
         side: usize,
-    ) -> Option<SideColors<V>> {
+    ) -> Option<(SideColors<V>, V::Mask)> {
         let prepared = self.prepared;
         let phong = flag(S::KNOWN.specular, prepared.specular) == Specular::Phong;
         let band = match (prepared.normalize, phong) {
@@ -789,7 +808,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         if self.reads_positions() && self.viewer_reads_alone {
             held = held & p.is_finite();
         }
-        if !held.all() {
+        if !held.all() && whole_groups::<V>(held).bitmask() == 0 {
             return None;
         }
         let n = if prepared.normalize {
@@ -805,7 +824,7 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
         };
         let finite = V::Mask::splat(true);
         let colours = self.side_colors::<V, true>(p, front, colors, finite, side, &mut held);
-        held.all().then_some(colours)
+        Some((colours, held))
     }
 
     /// [`Kernel::block`]'s eye-space normals N·n for a block with a lane whose N·n is not
@@ -891,11 +910,44 @@ impl<T: Real, S: Shape> Kernel<'_, T, S> {
             }
         }
         let n2 = n.dot(n);
-        if Self::FLOAT32 && self.plan.lean {
-            if let Some(colours) = self.lean_block(p, n, n2, colors, side) {
+        let lean = if Self::FLOAT32 && self.plan.lean {
+            self.lean_block(p, n, n2, colors, side)
+        } else {
+            None
+        };
+        if let Some((colours, held)) = lean {
+            if held.all() {
                 return colours;
             }
         }
+        // One call, so the careful path is inlined once.
+        let careful = self.careful_block(input, p, n, n2, colors, side);
+        let Some((colours, held)) = lean else {
+            return careful;
+        };
+        // Each group of lanes whole on the lean path keeps its colours, as it would in a block
+        // of its own.
+        let groups = whole_groups::<V>(held);
+        let mut out = careful;
+        for (side, lean) in out.iter_mut().zip(colours) {
+            for (channel, lean) in side.iter_mut().zip(lean) {
+                *channel = V::select(groups, lean, *channel);
+            }
+        }
+        out
+    }
+
+    /// [`Kernel::block`] on the careful path, from the eye-space `p` and `n` (|n|² `n2`).
+    #[inline(always)]
+    fn careful_block<V: Lanes<T = T>>(
+        &self,
+        input: &Block<V>,
+        p: V3<V>,
+        mut n: V3<V>,
+        n2: V,
+        colors: Option<[V; 4]>,
+        side: usize,
+    ) -> SideColors<V> {
         // Saturation: |N·n|² ≤ 1/MIN_POSITIVE (|N·n| ≤ 2^63 in f32, 2^511 in f64), else rescaled.
         let in_range = n2.le(V::splat(T::ONE / T::MIN_POSITIVE));
         let mut finite = if in_range.all() {
