@@ -65,6 +65,8 @@ def shade_table(data: dict[str, Any]) -> Table:
     the peers also give each method's largest error on the smooth set."""
     peers = any("drjit" in row["mvert_s"] or "jax" in row["mvert_s"] for row in scenes(data))
     methods = ["numpy", "numba", "drjit", "jax"] if peers else ["numpy", "numba"]
+    if any("c" in row["mvert_s"] for row in scenes(data)):  # files since the C loop joined
+        methods.insert(2, "c")
     header = ["scene", "vertices", "glshade", *methods, "stream"]
     header += [f"{TIMES} {m}" for m in methods] + ["of stream"]
     header += ["f64 exact"] if peers else ["display", "f64 exact"]
@@ -263,6 +265,9 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
             f"; numba {numba['version']} ({numba['threads']} threads, {numba['threading_layer']} "
             f"layer, OMP_WAIT_POLICY={numba['OMP_WAIT_POLICY']})"
         )
+    if "compiler" in settings.get("c", {}):
+        c = settings["c"]
+        notes += f"; C loop: {c['compiler']}, {c['flags']} ({c['threads']} threads)"
     if "drjit" in settings:
         drjit = settings["drjit"]
         notes += f"; Dr.Jit {drjit['version']} (LLVM {drjit['llvm']}, {drjit['threads']} threads)"

@@ -5,6 +5,7 @@ own flags and saves its results as JSON with the machine (``bench shade`` also a
 
 import csv
 import json
+import os
 import types
 from pathlib import Path
 from typing import Any
@@ -16,9 +17,10 @@ from conftest import require
 import glshade as gs
 from glshade import __main__ as cli
 from glshade import _glshade
-from glshade.lab import bench_shade, timing
+from glshade.lab import bench_shade, c_loop, timing
 from glshade.lab.baselines import numba_shade, numpy_shade
 from glshade.lab.bench_shade import CSV_COLUMNS, GRAZING, TOLERANCE, smooth_set, world_smooth_set
+from glshade.lab.c_loop import c_shade
 from glshade.lab.machine import identity, machine
 from glshade.lab.peers import drjit_shade, jax_shade, versions
 from glshade.lab.scenes import (
@@ -74,6 +76,28 @@ def test_the_drjit_peer_is_the_gl_equation(name: str) -> None:
 @pytest.mark.parametrize("name", GL)
 def test_the_jax_peer_is_the_gl_equation(name: str) -> None:
     _check_compiled("jax", jax_shade, name)
+
+
+@pytest.mark.parametrize("name", GL)
+def test_the_c_loop_is_the_gl_equation(name: str) -> None:
+    shade = c_shade(1)
+    # A C compiler is what building glshade from source needs (Rust links with it).
+    if isinstance(shade, str) and not os.environ.get("CI"):
+        pytest.skip(shade)
+    assert not isinstance(shade, str), shade
+    p, n, reference = _reference(name)
+    got = shade(p, n, EVERY[name])
+    assert got.shape == (4_000, 4) and got.dtype == np.float32
+    # -ffast-math's reciprocal square roots and vector powf: within the bench's tolerance.
+    np.testing.assert_allclose(got, reference, rtol=0, atol=TOLERANCE)
+    assert np.abs(got - reference).max() > 0  # the loop ran, not a copy of the reference
+
+
+def test_the_c_loop_reads_the_columns_of_the_light_table() -> None:
+    # The source names the columns; their numbers come from `baselines` as macros.
+    for column in ("COS_CUTOFF", "SPOT_EXPONENT", "K2", "VIEWER", "SHININESS", "COLUMNS"):
+        assert column in c_loop.SOURCE
+    assert {"-O3", "-ffast-math", "-fopenmp"} <= set(c_loop.FLAGS)
 
 
 def _check_compiled(module: str, make: Any, name: str) -> None:
@@ -268,7 +292,8 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json_and_csv(
     cpu = machine()
     assert f"CPU: {cpu['cpu']}; glshade's instruction set: {cpu['instruction_set']}" in out
     assert "of stream f64 exact" in out  # the header: no display column between them
-    assert "x drjit" in out and "max |error| on the smooth set" in out
+    assert "x drjit" in out and "x c" in out and "max |error| on the smooth set" in out
+    assert "C loop: " in out and "-O3 -march=native -ffast-math -fopenmp" in out
     found = versions()
     assert f"numba {found['numba']}, drjit {found['drjit']}" in out
     assert f"jax {found['jax']}, jaxlib {found['jaxlib']}" in out
@@ -298,7 +323,7 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json_and_csv(
         ]
         assert r["speedup"]["numpy"]["median"] == pytest.approx(np.median(per_round))
         assert {"stream", "exact64"} <= set(r["ms"])
-        checked = {"glshade", "exact64", "numpy", "numba", "drjit", "jax"}
+        checked = {"glshade", "exact64", "numpy", "numba", "c", "drjit", "jax"}
         assert set(r["error_smooth"]) == checked and r["failed"] == {}
         assert all(e <= TOLERANCE for e in r["error_smooth"].values())
         assert set(r["mvert_s"]) == {*checked, "stream"} and r["smooth_vertices"] > 0
@@ -306,7 +331,7 @@ def test_bench_shade_runs_prints_every_scene_and_saves_json_and_csv(
         rows = list(csv.reader(file))
     assert tuple(rows[0]) == CSV_COLUMNS
     table = [dict(zip(CSV_COLUMNS, row, strict=True)) for row in rows[1:]]
-    assert len(table) == 3 * 2 * 7  # scenes, sizes, methods
+    assert len(table) == 3 * 2 * 8  # scenes, sizes, methods
     first = saved["results"]["scenes"][0]
     numba = next(row for row in table if row["method"] == "numba")
     assert (numba["scene"], numba["vertices"]) == ("1 directional", "100")

@@ -41,6 +41,8 @@ from .baselines import (
     numpy_shade,
 )
 from .bench import save
+from .c_loop import FLAGS as C_FLAGS
+from .c_loop import c_shade, compiler_version
 from .machine import describe, machine, usable_cpus
 from .peers import drjit_shade, glshade_threads, jax_shade, jax_threads, versions
 from .scenes import AnyScene, bench_scenes, bench_vertices, shade_scenes
@@ -74,7 +76,9 @@ MARGIN = 1e-4  # the smooth set's least distance to a kink of the equation
 # only to u/|n·v| and the metallic-roughness model's specular term is that ill-conditioned.
 GRAZING = 1e-2
 # The methods, in the order of the table and the CSV; all but the stream are checked.
-METHODS = ("glshade", "exact64", "numpy", "numba", "drjit", "jax", "stream")
+METHODS = ("glshade", "exact64", "numpy", "numba", "c", "drjit", "jax", "stream")
+# The peers glshade's speed is set beside, in the table's order.
+PEERS = ("numpy", "numba", "c", "drjit", "jax")
 # The numpy baseline is timed up to this many vertex-lights per call (8·10⁶: 10⁶ vertices and 8
 # lights, about a second a call); beyond, it would take most of the bench's time.
 NUMPY_WORK = 8_000_000
@@ -257,6 +261,16 @@ def _header(compiled: Mapping[str, Any]) -> dict[str, Any]:
             f"{layer} layer, OMP_WAIT_POLICY={os.environ['OMP_WAIT_POLICY']})"
         )
     threads = glshade_threads()
+    if isinstance(peers["c"], str):
+        print(peers["c"])
+        settings["c"] = {"unavailable": peers["c"]}
+    else:
+        settings["c"] = {"compiler": compiler_version(), "flags": " ".join(C_FLAGS[:4])}
+        settings["c"]["threads"] = threads
+        print(
+            f"C loop: {settings['c']['compiler']}, {settings['c']['flags']} (OpenMP over tiles "
+            f"of 256 vertices, one vector loop a light; {threads} threads, glshade's)"
+        )
     if isinstance(peers["drjit"], str):
         print(peers["drjit"])
         settings["drjit"] = {"unavailable": peers["drjit"]}
@@ -292,8 +306,8 @@ def _methods(
     compiled: Mapping[str, Any],
 ) -> dict[str, Method]:
     """Every method of `METHODS` on these vertices, each a call with no arguments; the
-    compiled ones (numba, Dr.Jit, JAX) where `compiled` holds a callable, not a reason; the
-    numpy baseline for GL's scenes alone."""
+    compiled ones (numba, the C loop, Dr.Jit, JAX) where `compiled` holds a callable, not a
+    reason; the numpy baseline for GL's scenes alone."""
     p64, normals64 = p.astype(np.float64), normals.astype(np.float64)
     reads_positions = "reads positions" in scene.plan()
     methods: dict[str, Method] = {
@@ -330,12 +344,12 @@ def _print_row(
     FAILED."""
     ratios = {k: r.median for k, r in speedup.items()}
     inverse = {k: 1.0 / r for k, r in ratios.items()}  # times over "fast", as printed before
-    cells = [_cell(rate, k, failed, "{:9.1f}") for k in ("glshade", "numpy", "numba")]
-    cells += [_cell(rate, k, failed, "{:9.1f}") for k in ("drjit", "jax", "stream")]
-    cells += [_cell(ratios, k, failed, "{:7.1f}x") for k in ("numpy", "numba", "drjit", "jax")]
+    cells = [_cell(rate, k, failed, "{:9.1f}") for k in ("glshade", *PEERS, "stream")]
+    cells += [_cell(ratios, k, failed, "{:7.1f}x") for k in PEERS]
     cells.append(_cell(ratios, "stream", failed, "{:9.2f}"))
     cells.append(_cell(inverse, "exact64", failed, "{:8.2f}x"))
-    print(f"  {n:>10,} {' '.join(cells[:6])}   {' '.join(cells[6:])}")
+    rates = len(PEERS) + 2
+    print(f"  {n:>10,} {' '.join(cells[:rates])}   {' '.join(cells[rates:])}")
     shown = ", ".join(
         f"{name} {'-' if error is None else f'{error:.1e}'}" for name, error in errors.items()
     )
@@ -555,7 +569,12 @@ def bench_shade(
         The exit status, 0.
     """
     names = list(scenes) if scenes is not None else list(shade_scenes())
-    compiled: dict[str, Any] = {"numba": numba_shade(), "drjit": drjit_shade(), "jax": jax_shade()}
+    compiled: dict[str, Any] = {
+        "numba": numba_shade(),
+        "c": c_shade(glshade_threads()),
+        "drjit": drjit_shade(),
+        "jax": jax_shade(),
+    }
     # The world models' peers: numba and Dr.Jit (no JAX or numpy version of them).
     world: dict[str, Any] = {"numba": numba_world(), "drjit": drjit_world()}
     settings = _header(compiled)
@@ -578,10 +597,10 @@ def bench_shade(
     for name in names:
         scene = every[name]
         print(f"\n{name}: {scene.plan()}")
+        rates = " ".join(f"{k:>9}" for k in ("glshade", *PEERS, "stream"))
+        ratios = " ".join(f"{'x ' + k:>8}" for k in PEERS)
         print(
-            f"  {'vertices':>10} {'glshade':>9} {'numpy':>9} {'numba':>9} {'drjit':>9} "
-            f"{'jax':>9} {'stream':>9}   {'x numpy':>8} {'x numba':>8} {'x drjit':>8} "
-            f"{'x jax':>8} {'of stream':>9} {'f64 exact':>9}"
+            f"  {'vertices':>10} {rates}   {ratios} {'of stream':>9} {'f64 exact':>9}"
             "   (million vertices/s; ratios: medians of per-round ratios)"
         )
         for n in sizes:
