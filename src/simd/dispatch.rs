@@ -139,16 +139,6 @@ impl Isa {
             _ => panic!("run_wide needs AVX2 or AVX-512, got {}", self.name()),
         }
     }
-
-    /// Runs `work` with AVX2's registers alone: a test's code for one set, not for each.
-    ///
-    /// # Panics
-    /// If the CPU lacks AVX2 or FMA.
-    #[cfg(all(test, target_arch = "x86_64"))]
-    pub(crate) fn run_avx2<W: LaneWork>(work: W) {
-        assert!(Isa::Avx2.supported(), "avx2 is not supported here");
-        unsafe { avx2(work) }
-    }
 }
 
 /// With the `single-kernel` feature (the inner loop of kernel work), the one level the kernels
