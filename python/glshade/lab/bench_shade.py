@@ -41,7 +41,7 @@ from .baselines import (
     numpy_shade,
 )
 from .bench import save
-from .c_loop import FLAGS as C_FLAGS
+from .c_loop import OPTIONS as C_OPTIONS
 from .c_loop import c_shade, compiler_version
 from .machine import describe, machine, usable_cpus
 from .peers import drjit_shade, glshade_threads, jax_shade, jax_threads, versions
@@ -265,7 +265,7 @@ def _header(compiled: Mapping[str, Any]) -> dict[str, Any]:
         print(peers["c"])
         settings["c"] = {"unavailable": peers["c"]}
     else:
-        settings["c"] = {"compiler": compiler_version(), "flags": " ".join(C_FLAGS[:4])}
+        settings["c"] = {"compiler": compiler_version(), "flags": " ".join(C_OPTIONS)}
         settings["c"]["threads"] = threads
         print(
             f"C loop: {settings['c']['compiler']}, {settings['c']['flags']} (OpenMP over tiles "
