@@ -9,6 +9,7 @@ from typing import Any, cast
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from ._intake import warn_if_bytes
 from ._png import encode_png, quantize
 
 __all__ = ["Image"]
@@ -44,6 +45,7 @@ def _pixels(value: ArrayLike, name: str) -> NDArray[np.floating[Any]]:
         raise ValueError(f"{name} must have shape {_SHAPES}, got {a.shape}{_shape_hint(a.shape)}")
     kind, size = a.dtype.kind, a.dtype.itemsize
     if kind == "f":
+        warn_if_bytes(a, name, "Image")
         if size in (4, 8):
             return a
         return a.astype(np.float32 if size < 4 else np.float64)
@@ -62,6 +64,13 @@ def _shape_hint(shape: tuple[int, ...]) -> str:
     """How to reach an accepted shape from a common near miss."""
     if len(shape) == 3 and shape[2] == 1:
         return ": drop the channel axis with array[..., 0]"
+    if len(shape) == 4 and shape[0] == 2 and shape[3] in (3, 4):
+        return (
+            ": a two-sided result (front, back) from a scene with two_side or a double-sided "
+            "material? take one side, array[0] (front) or array[1] (back)"
+        )
+    if len(shape) == 4 and shape[3] in (3, 4):
+        return ": several images (views, or the colours of scene.outputs)? take one, array[0]"
     if len(shape) == 3 and shape[0] in (1, 3, 4) and shape[2] not in (3, 4):
         return ": channels first? move them last with np.moveaxis(array, 0, -1)"
     return ""

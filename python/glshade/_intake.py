@@ -14,8 +14,10 @@ The rules (the table of the documentation's Arrays and dtypes page, docs/pages/g
 - Vertex colours of dtype uint8 (trimesh's, PNG's, PIL's 0-255) are scaled to [0, 1] by 1/255;
   any other dtype is taken as the colour values themselves.
 - Colours are numbers: a colour name (``"red"``) raises ``TypeError`` saying so, with the numbers
-  to write instead; a material or light colour whose every value is a whole number in [0, 255],
-  the largest 16 or more, warns (`ColorRangeWarning`: bytes written where GL takes [0, 1]).
+  to write instead (three.js' colours also take its hex integers and '#rrggbb' strings); a
+  colour of any surface whose every value lies in [0, 255], the largest 16 or more, warns
+  (`ColorRangeWarning`, `looks_like_bytes`: bytes written where glshade takes [0, 1]), or
+  raises ``ValueError`` where values above 1 are not allowed.
 - Names of options are case-insensitive (``"Phong"`` is ``"phong"``).
 - ``out=`` is never copied: it must be exactly right, and it must not share memory with an input
   (checked exactly by the native module, and here for two maps of one file).
@@ -42,14 +44,18 @@ _FLOAT64 = np.dtype(np.float64)
 
 
 class ColorRangeWarning(UserWarning):
-    """A colour that looks written in bytes (0-255) where GL takes [0, 1].
+    """A colour that looks written in bytes (0-255) where glshade takes [0, 1].
 
-    Every value of the colour is a whole number in [0, 255] and the largest is 16 or more:
-    (255, 128, 0) rather than (1, 0.5, 0). Smaller whole numbers, (2, 2, 2) or (5, 5, 5), are
-    how a bright light is written, and as bytes they would be a near-black colour, so they do
-    not warn; nor does a light with attenuation, whose colour is an intensity. GL allows
-    values above 1 (high dynamic range), so this is a warning, not an error; silence it with
-    ``warnings.filterwarnings("ignore", category=glshade.ColorRangeWarning)``.
+    Every colour glshade takes (material, light and background colours of every model, vertex
+    colours, textures, `Image` and `compare` pictures) is checked by one rule: every value lies
+    in [0, 255] and the largest is 16 or more, (255, 128, 0) rather than (1, 0.5, 0), or an
+    image times 255. Smaller values, (2, 2, 2) or (5, 5, 5), are how a bright light is written,
+    and as bytes they would be a near-black colour, so they do not warn; nor does a GL light
+    with attenuation, whose colour is an intensity, or uint8 data, which is divided by 255.
+    Colours above 1 are allowed (high dynamic range), so this is a warning, not an error;
+    silence it with ``warnings.filterwarnings("ignore", category=glshade.ColorRangeWarning)``.
+    Where values above 1 are not allowed (glTF's base colour factor), the same finding raises
+    ``ValueError`` with the same message.
     """
 
 
@@ -102,11 +108,12 @@ _WIDTHS = {"positions": (3,), "normals": (3,), "colors": (3, 4)}
 
 
 def vertices(
-    positions: ArrayLike, normals: ArrayLike, colors: ArrayLike | None
+    positions: ArrayLike, normals: ArrayLike, colors: ArrayLike | None, owner: str = "shade"
 ) -> tuple[FloatArray, FloatArray, FloatArray | None]:
     """The vertex arrays of `shade` as the native module reads them, broadcast against each
     other: (..., 3) positions and normals, (..., 3|4) colours of one leading shape. A
-    ValueError names the arrays whose shapes do not fit."""
+    ValueError names the arrays whose shapes do not fit; colours that look like bytes warn,
+    naming `owner`, the function they were given to."""
     p, n = array(positions, "positions"), array(normals, "normals")
     dtype = compute_dtype(p, n)
     shape = p.shape
@@ -114,7 +121,7 @@ def vertices(
         return ready(p, dtype), ready(n, dtype), None
     given = {"positions": p, "normals": n}
     if colors is not None:
-        given["colors"] = color_values(vertex_colors(colors))
+        given["colors"] = color_values(vertex_colors(colors), "colors", owner)
     leading = []
     for name, a in given.items():
         if a.ndim == 0 or a.shape[-1] not in _WIDTHS[name]:
@@ -135,11 +142,13 @@ def vertices(
     return ready_arrays[0], ready_arrays[1], c
 
 
-def color_values(a: NDArray[Any]) -> NDArray[Any]:
-    """Colours of dtype uint8 (0-255) as float64 in [0, 1]; others as they are."""
+def color_values(a: NDArray[Any], name: str, owner: str) -> NDArray[Any]:
+    """Per-vertex colours: uint8 (0-255) as float64 in [0, 1]; others as they are, with a
+    `ColorRangeWarning` naming `name` and `owner` where they look like 0-255 bytes."""
     if a.dtype == np.uint8:
         scaled: NDArray[Any] = a / 255.0
         return scaled
+    warn_if_bytes(a, name, owner)
     return a
 
 
@@ -394,8 +403,8 @@ def vertex_colors(value: ArrayLike, name: str = "colors") -> NDArray[Any]:
     return array(value, name)
 
 
-# The smallest largest value of a colour taken for bytes: below it, whole numbers are more
-# likely a bright light's (2, 2, 2) than a near-black byte colour (a sixteenth of full scale).
+# The smallest largest value of a colour taken for bytes: below it, values are more likely a
+# bright light's (2, 2, 2) than a near-black byte colour (a sixteenth of full scale).
 _BYTE_HINT = 16.0
 
 
@@ -416,38 +425,62 @@ def colors_checked() -> Iterator[None]:
         _CHECKED.reset(token)
 
 
-def warn_if_bytes(values: Float64Array, name: str, owner: str) -> None:
-    """Warns (`ColorRangeWarning`) when every value of the colour `values` is a whole number in
-    [0, 255] and the largest is at least `_BYTE_HINT`: bytes written where GL takes [0, 1].
-    `owner` names the object the colour belongs to ("Material", "Light")."""
-    if values.size == 0 or _CHECKED.get():
-        return
-    high, low = values.max(), values.min()
-    if not (
-        _BYTE_HINT <= high <= 255.0 and low >= 0.0 and np.array_equal(values, np.round(values))
-    ):
-        return
-    shown = (
-        f"{name}={_numbers(values)}"
-        if values.ndim == 1
-        else f"{name} (every value a whole number, up to {high:g})"
-    )
-    scaled = ""
-    if values.ndim == 1:
-        # An alpha of 1 beside bytes is GL's opaque, kept as it is.
-        divided = values / 255
+def looks_like_bytes(values: NDArray[Any]) -> bool:
+    """The one rule every colour surface applies: every value (NaN aside) lies in [0, 255] and
+    the largest is at least 16, as 0-255 bytes do and [0, 1] colours do not. The largest is
+    read first, so a picture or a vertex array that is not bytes costs one pass."""
+    if values.size == 0 or values.dtype.kind not in "fiu":
+        return False
+    high, low = values.max(), None
+    if np.isnan(high):  # NaN rows aside, as the shading leaves them aside
+        finite = values[~np.isnan(values)]
+        if finite.size == 0:
+            return False
+        high, low = finite.max(), finite.min()
+    if not _BYTE_HINT <= high <= 255.0:
+        return False
+    return bool((values.min() if low is None else low) >= 0.0)
+
+
+def bytes_message(values: NDArray[Any], name: str, owner: str) -> str:
+    """What every surface says of a colour `values` that `looks_like_bytes`: what was found,
+    and the [0, 1] values to give instead (for one colour; an alpha of 1 kept)."""
+    if values.ndim == 1 and values.size <= 4:
+        divided = np.asarray(values, np.float64) / 255
         if len(values) == 4 and values[3] == 1.0:
-            divided[3] = 1.0
+            divided[3] = 1.0  # an alpha of 1 beside bytes is an opaque alpha, kept as it is
+        shown = f"{name}={_numbers(values)}"
         scaled = f": {name}={_numbers(divided)}"
+    else:
+        shown = f"{name} (values up to {float(np.nanmax(values)):g})"
+        scaled = f": {name} / 255 (or give it as uint8, which is divided by 255)"
+    return (
+        f"{owner} {shown} looks like 0-255 byte values, but glshade's colours are in [0, 1] "
+        f"(above 1 they saturate: a near-white result). Divide by 255{scaled}"
+    )
+
+
+def warn_if_bytes(values: NDArray[Any], name: str, owner: str) -> None:
+    """Warns (`ColorRangeWarning`) when the colour `values` `looks_like_bytes`: bytes written
+    where glshade takes [0, 1], and values above 1 are allowed (high dynamic range). `owner`
+    names the object or function the colour was given to ("Material", "shade")."""
+    if _CHECKED.get() or not looks_like_bytes(values):
+        return
     warnings.warn(
         ColorRangeWarning(
-            f"{owner} {shown} looks like 0-255 byte values, but GL colours are in [0, 1] (above "
-            f"1 they saturate: a near-white result). Divide by 255{scaled}; or, if the values "
-            "above 1 are meant (high dynamic range), silence this with "
+            bytes_message(values, name, owner) + "; or, if the values above 1 are meant (high "
+            "dynamic range), silence this with "
             "warnings.filterwarnings('ignore', category=glshade.ColorRangeWarning)"
         ),
         stacklevel=_caller_level(),
     )
+
+
+def refuse_bytes(values: NDArray[Any], name: str, owner: str) -> None:
+    """Raises ValueError, with `bytes_message`, when the colour `values` `looks_like_bytes`
+    where values above 1 are not allowed (glTF's factors)."""
+    if looks_like_bytes(values):
+        raise ValueError(bytes_message(values, name, owner))
 
 
 _PACKAGE = os.path.dirname(os.path.abspath(__file__))

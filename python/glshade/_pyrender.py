@@ -164,7 +164,10 @@ def _draws(scene: Any) -> list[tuple[Any, ...]]:
             colors = primitive.color_0
             if colors is not None:
                 colors = rows(
-                    color_values(np.asarray(colors)), "color_0", np.dtype(np.float64), (3, 4)
+                    color_values(np.asarray(colors), "color_0", "pyrender mesh"),
+                    "color_0",
+                    np.dtype(np.float64),
+                    (3, 4),
                 )
             texture, uv, filter_, wrap = _texture(primitive)
             v, n = _arrays(primitive)

@@ -122,7 +122,7 @@ def render_input(
     if colors is None and mesh is not None:
         own = mesh_colors(mesh)
     elif colors is not None and colors is not False:
-        own = (color_values(vertex_colors(colors)), "vertex")
+        own = (vertex_colors(colors), "vertex")
     c = n = t = None
     corner_normals = normals is not None and np.ndim(normals) == 3
     if normals is not None and not corner_normals:
@@ -161,7 +161,7 @@ def render_input(
     if own is not None:
         values, per = own
         expected = len(f) if per == "face" else len(v)
-        c = rows(color_values(values), "colors", v.dtype, (3, 4))
+        c = rows(color_values(values, "colors", "render"), "colors", v.dtype, (3, 4))
         if len(c) != expected:
             raise ValueError(
                 f"colors must have one row per {per} ({expected}), got shape {c.shape}"

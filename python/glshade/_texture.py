@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 from numpy.typing import NDArray
 
-from ._intake import array, one_of
+from ._intake import array, one_of, warn_if_bytes
 
 __all__ = ["FILTERS", "WRAPS", "texels", "wrap_modes"]
 
@@ -38,6 +38,8 @@ def texels(image: Any) -> NDArray[Any]:
         raise TypeError(f"texture must be a real image (uint8, uint16 or float), got {a.dtype}")
     if not a.dtype.isnative:  # big-endian data: the same type in this machine's order
         a = a.astype(a.dtype.newbyteorder("="))
+    if a.dtype.kind != "u" or a.dtype.itemsize > 2:  # uint8 and uint16 are normalised
+        warn_if_bytes(a, "texture", "render")
     if a.dtype.type in _IN_PLACE:
         return np.ascontiguousarray(a)
     return np.ascontiguousarray(a, dtype=np.float32)

@@ -6,17 +6,21 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable, Iterable, Mapping
-from typing import Any, ClassVar, Generic, TypeVar
+from typing import Any, ClassVar, Generic, TypeVar, cast
 
 import numpy as np
 
 from . import _glshade
-from ._intake import accuracy_choice, number, vector
+from ._intake import accuracy_choice, number, vector, warn_if_bytes
 from ._model import Model, at_default
 from ._records import set_field
 from ._typing import Accuracy, Float64Array
 
-__all__ = ["WorldScene", "record_fields", "set_fields"]
+__all__ = ["Color", "WorldScene", "record_fields", "set_fields"]
+
+Color = tuple[float, ...]
+"""The annotation of a colour field of a light or material: `set_fields` converts it by the
+model's colour rule and warns when it looks like 0-255 bytes."""
 
 LightT = TypeVar("LightT")
 MaterialT = TypeVar("MaterialT")
@@ -38,11 +42,22 @@ class WorldScene(Model, Generic[LightT, MaterialT]):
     _MATERIAL: ClassVar[type[Any]]
     """The material type, whose defaults are the model's default material."""
 
-    def _take(self, lights: Iterable[LightT], material: MaterialT | None) -> None:
-        """Stores `lights` and `material` (None: the default one), checked: a TypeError names
-        the first of another type."""
+    def _take(self, lights: Iterable[LightT] | LightT, material: MaterialT | None) -> None:
+        """Stores `lights` (one light, or an iterable of them) and `material` (None: the
+        default one), checked: a TypeError names the first of another type."""
         module = self._module()
-        self._lights = tuple(lights)
+        try:
+            # One light, as `glshade.Scene` takes it, or an iterable of them.
+            self._lights = (
+                (cast(LightT, lights),)
+                if isinstance(lights, self._LIGHTS)
+                else tuple(cast(Iterable[LightT], lights))
+            )
+        except TypeError:
+            raise TypeError(
+                f"lights must be a glshade.{module} light or an iterable of them (a list), got "
+                f"{type(lights)!r}"
+            ) from None
         for i, light in enumerate(self._lights):
             if not isinstance(light, self._LIGHTS):
                 names = [kind.__name__ for kind in self._LIGHTS]
@@ -150,15 +165,25 @@ def record_fields(record: Any) -> dict[str, Any]:
     return {f.name: getattr(record, f.name) for f in dataclasses.fields(record)}
 
 
-def set_fields(record: Any, arguments: Mapping[str, Any]) -> None:
+def set_fields(
+    record: Any,
+    arguments: Mapping[str, Any],
+    color: Callable[[Any, str], tuple[float, ...]] = vector,
+) -> None:
     """Stores the fields of a light or material of a world model from its constructor's
     `arguments` (its ``locals()``), in the order of the fields, each converted by its
-    annotation: ``tuple[float, ...]`` by `vector` (a 3-vector of numbers), ``float`` by
+    annotation: ``tuple[float, ...]`` by `vector` (a 3-vector of numbers), `Color` by `color`
+    (the model's colour rule; then `warn_if_bytes` under the record's name), ``float`` by
     `number`. A field of another type is the constructor's to store."""
     convert: dict[object, Callable[[Any, str], Any]] = {
         "tuple[float, ...]": vector,
+        "Color": color,
         "float": number,
     }
     for field in dataclasses.fields(record):
         if field.type in convert:
             set_field(record, field.name, convert[field.type](arguments[field.name], field.name))
+    owner = f"{type(record).__module__.rsplit('.', 1)[-1]}.{type(record).__name__}"
+    for field in dataclasses.fields(record):
+        if field.type == "Color":
+            warn_if_bytes(np.array(getattr(record, field.name)), field.name, owner)

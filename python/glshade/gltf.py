@@ -32,10 +32,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._intake import color, vector
+from ._intake import color, refuse_bytes, vector
 from ._records import ValueRecord, set_field
 from ._typing import Float64Array
-from ._world import WorldScene, record_fields, set_fields
+from ._world import Color, WorldScene, record_fields, set_fields
 
 __all__ = ["DirectionalLight", "Material", "PointLight", "Scene", "SpotLight"]
 
@@ -71,7 +71,7 @@ class Material(ValueRecord):
     base_color: tuple[float, float, float, float]
     metallic: float
     roughness: float
-    emissive: tuple[float, ...]
+    emissive: Color
 
     def __init__(
         self,
@@ -83,6 +83,7 @@ class Material(ValueRecord):
         base = color(base_color, "base_color")
         if base.shape not in ((3,), (4,)):
             raise ValueError(f"base_color must have shape (3,) or (4,), got shape {base.shape}")
+        refuse_bytes(base, "base_color", "gltf.Material")  # glTF's factors lie in [0, 1]
         set_field(self, "base_color", (*(float(x) for x in base), 1.0)[:4])
         set_fields(self, locals())  # the others
         # The native scene checks ranges; checking here too names the value at its source.
@@ -104,7 +105,7 @@ class DirectionalLight(ValueRecord):
         The way the light travels, any nonzero length (normalised).
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     direction: tuple[float, ...]
 
@@ -133,7 +134,7 @@ class PointLight(ValueRecord):
         Where the light is, in the coordinates of the vertices.
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     position: tuple[float, ...]
 
@@ -170,7 +171,7 @@ class SpotLight(ValueRecord):
         Radians, at most pi/2.
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     position: tuple[float, ...]
     direction: tuple[float, ...]
@@ -222,7 +223,7 @@ class Scene(WorldScene[Light, Material]):
 
     Parameters
     ----------
-    lights : iterable of DirectionalLight, PointLight or SpotLight
+    lights : DirectionalLight, PointLight or SpotLight, or an iterable of them
         Summed in order.
     material : Material, optional
         Default: glTF's default material (white, metallic 1, roughness 1).
@@ -249,7 +250,7 @@ class Scene(WorldScene[Light, Material]):
 
     def __init__(
         self,
-        lights: Iterable[Light] = (),
+        lights: Iterable[Light] | Light = (),
         material: Material | None = None,
         *,
         ambient_light: ArrayLike = (0.0, 0.0, 0.0),

@@ -38,6 +38,14 @@ def _float64(value: ArrayLike, name: str) -> NDArray[np.float64]:
     return np.ascontiguousarray(a, dtype=np.float64)
 
 
+def _finite(value: object, name: str) -> float:
+    """A finite real number (matplotlib takes NaN, and returns NaN everywhere)."""
+    x = number(value, name)
+    if not np.isfinite(x):
+        raise ValueError(f"{name} must be a finite number, got {x}")
+    return x
+
+
 class LightSource:
     """A light at infinity, from azimuth `azdeg` (degrees clockwise from north) and altitude
     `altdeg` (degrees above the horizon): ``matplotlib.colors.LightSource``, computed by
@@ -74,12 +82,12 @@ class LightSource:
         hsv_min_sat: float = 1,
         hsv_max_sat: float = 0,
     ) -> None:
-        self.azdeg = number(azdeg, "azdeg")
-        self.altdeg = number(altdeg, "altdeg")
-        self.hsv_min_val = number(hsv_min_val, "hsv_min_val")
-        self.hsv_max_val = number(hsv_max_val, "hsv_max_val")
-        self.hsv_min_sat = number(hsv_min_sat, "hsv_min_sat")
-        self.hsv_max_sat = number(hsv_max_sat, "hsv_max_sat")
+        self.azdeg = _finite(azdeg, "azdeg")
+        self.altdeg = _finite(altdeg, "altdeg")
+        self.hsv_min_val = _finite(hsv_min_val, "hsv_min_val")
+        self.hsv_max_val = _finite(hsv_max_val, "hsv_max_val")
+        self.hsv_min_sat = _finite(hsv_min_sat, "hsv_min_sat")
+        self.hsv_max_sat = _finite(hsv_max_sat, "hsv_max_sat")
 
     @property
     def direction(self) -> NDArray[np.float64]:

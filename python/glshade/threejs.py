@@ -36,8 +36,9 @@ from numpy.typing import ArrayLike
 from . import _glshade
 from ._intake import one_of, vector
 from ._records import ValueRecord, set_field
+from ._transfer import srgb_decode
 from ._typing import Float64Array
-from ._world import WorldScene, record_fields, set_fields
+from ._world import Color, WorldScene, record_fields, set_fields
 
 __all__ = [
     "AmbientLight",
@@ -50,9 +51,49 @@ __all__ = [
 ]
 
 Side = Literal["front", "back", "double"]
+ColorLike = ArrayLike | int | str
+"""A three.js colour: (3,) linear RGB numbers, a hex integer (0xff8800) or a '#rrggbb' string."""
 _WHITE = (1.0, 1.0, 1.0)
 _ZERO = (0.0, 0.0, 0.0)
 _UP = (0.0, 1.0, 0.0)
+
+
+def _color(value: ColorLike, name: str) -> tuple[float, ...]:
+    """A colour as three.js' ``Color`` takes it, in linear RGB: three numbers as they are (the
+    working colour space, as ``new Color(r, g, b)``); a hex integer ``0xrrggbb`` or a
+    ``'#rrggbb'`` or ``'#rgb'`` string as sRGB, decoded as current three.js' colour management
+    decodes them (``setHex`` and ``setStyle`` read sRGB)."""
+    if isinstance(value, (int, np.integer)) and not isinstance(value, (bool, np.bool_)):
+        if not 0 <= value <= 0xFFFFFF:
+            raise ValueError(f"{name} as a hex integer must be in [0, 0xffffff], got {value:#x}")
+        encoded = [(int(value) >> shift & 255) / 255 for shift in (16, 8, 0)]
+    elif isinstance(value, str):
+        encoded = _hex_string(value, name)
+    else:
+        a = np.asarray(value) if not isinstance(value, np.ndarray) else value
+        if a.ndim == 0 and a.dtype.kind in "fiub":
+            raise TypeError(
+                f"{name} must be three numbers (r, g, b) in [0, 1], linear, a hex integer such as "
+                f"0xff8800 or a '#rrggbb' string, got {value!r}"
+            )
+        return vector(value, name)
+    return tuple(float(x) for x in srgb_decode(np.array(encoded)))
+
+
+def _hex_string(text: str, name: str) -> list[float]:
+    """The sRGB components of a CSS hex colour, '#rrggbb' or '#rgb' (each digit doubled)."""
+    digits = text.strip().lstrip("#")
+    if text.strip().startswith("#") and len(digits) in (3, 6):
+        try:
+            if len(digits) == 3:
+                return [int(d, 16) / 15 for d in digits]
+            return [int(digits[i : i + 2], 16) / 255 for i in (0, 2, 4)]
+        except ValueError:
+            pass
+    raise ValueError(
+        f"{name} as a string must be a hex colour, '#rrggbb' or '#rgb' (sRGB, as three.js reads "
+        f"it), got {text!r}: write, say, '#ff8800', 0xff8800, or linear numbers (1.0, 0.25, 0.0)"
+    )
 
 
 @dataclasses.dataclass(frozen=True, eq=False, init=False)
@@ -61,19 +102,21 @@ class MeshPhongMaterial(ValueRecord):
 
     Parameters
     ----------
-    color : (3,) float >= 0, default (1, 1, 1)
-        The diffuse colour, linear RGB (three.js' ``color``; with three.js' colour management
-        on, as in current releases, a hex or CSS colour is sRGB: decode it first). Vertex
-        colours and `render`'s texture multiply it.
-    specular : (3,) float >= 0, default (17/255, 17/255, 17/255)
-        Schlick's f0 (three.js' ``specular``: 0x111111 as r111 reads it; where colour
-        management decodes hex colours from sRGB, as current releases do, 0x111111 is
-        0.0056).
+    color : (3,) float >= 0, int or str, default (1, 1, 1)
+        The diffuse colour (three.js' ``color``): three numbers are linear RGB; a hex integer
+        (``0xff8800``) or a ``'#rrggbb'`` / ``'#rgb'`` string is sRGB and is decoded, as
+        current three.js' colour management decodes ``new Color(0xff8800)``. Every colour
+        parameter of this module takes the same three forms. Vertex colours and `render`'s
+        texture multiply it.
+    specular : (3,) float >= 0, int or str, default (17/255, 17/255, 17/255)
+        Schlick's f0 (three.js' ``specular``): the default is 0x111111 as r111 reads it,
+        undecoded; ``specular=0x111111`` is decoded from sRGB as current releases decode it,
+        0.0056.
     shininess : float >= 0, default 30
         The Blinn-Phong exponent; at least 1e-4, as three.js passes it to its shader (so
         ``(n·h)^shininess`` is 0 at n·h = 0).
-    emissive : (3,) float >= 0, default (0, 0, 0)
-        Emitted linear RGB.
+    emissive : (3,) float >= 0, int or str, default (0, 0, 0)
+        Emitted linear RGB (or a hex colour, decoded).
     emissive_intensity : float >= 0, default 1
         ``emissiveIntensity``, multiplies `emissive`.
     opacity : float in [0, 1], default 1
@@ -86,31 +129,35 @@ class MeshPhongMaterial(ValueRecord):
     Raises
     ------
     TypeError
-        For a non-numeric value.
+        For a non-numeric value, or a single number as a colour.
     ValueError
-        For a colour of another shape than (3,), a negative colour, shininess or intensity, an
-        opacity outside [0, 1] or an unknown side.
+        For a colour of another shape than (3,), a hex integer beyond 0xffffff or a string not
+        '#rrggbb' or '#rgb', a negative colour, shininess or intensity, an opacity outside
+        [0, 1] or an unknown side.
+    ColorRangeWarning
+        For a colour given as numbers that look like 0-255 bytes (every value in [0, 255], the
+        largest 16 or more): write it as a hex colour or divide by 255.
     """
 
-    color: tuple[float, ...]
-    specular: tuple[float, ...]
+    color: Color
+    specular: Color
     shininess: float
-    emissive: tuple[float, ...]
+    emissive: Color
     emissive_intensity: float
     opacity: float
     side: Side
 
     def __init__(
         self,
-        color: ArrayLike = _WHITE,
-        specular: ArrayLike = (17 / 255, 17 / 255, 17 / 255),
+        color: ColorLike = _WHITE,
+        specular: ColorLike = (17 / 255, 17 / 255, 17 / 255),
         shininess: float = 30.0,
-        emissive: ArrayLike = _ZERO,
+        emissive: ColorLike = _ZERO,
         emissive_intensity: float = 1.0,
         opacity: float = 1.0,
         side: Side = "front",
     ) -> None:
-        set_fields(self, locals())
+        set_fields(self, locals(), _color)
         set_field(self, "side", one_of(side, "side", ("front", "back", "double")))
         # The native scene checks ranges; checking here too names the value at its source.
         _native_scene([], self, _ZERO, None, True)
@@ -123,16 +170,16 @@ class AmbientLight(ValueRecord):
 
     Parameters
     ----------
-    color : (3,) float >= 0, default (1, 1, 1)
-        Linear RGB.
+    color : (3,) float >= 0, int or str, default (1, 1, 1)
+        Linear RGB, or a hex colour (sRGB, decoded; see `MeshPhongMaterial`).
     intensity : float >= 0, default 1
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
 
-    def __init__(self, color: ArrayLike = _WHITE, intensity: float = 1.0) -> None:
-        set_fields(self, locals())
+    def __init__(self, color: ColorLike = _WHITE, intensity: float = 1.0) -> None:
+        set_fields(self, locals(), _color)
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -144,28 +191,28 @@ class HemisphereLight(ValueRecord):
 
     Parameters
     ----------
-    sky_color : (3,) float >= 0, default (1, 1, 1)
-        The light's ``color`` (the constructor's ``skyColor``), linear RGB.
-    ground_color : (3,) float >= 0, default (1, 1, 1)
-        ``groundColor``, linear RGB.
+    sky_color : (3,) float >= 0, int or str, default (1, 1, 1)
+        The light's ``color`` (the constructor's ``skyColor``), linear RGB or a hex colour.
+    ground_color : (3,) float >= 0, int or str, default (1, 1, 1)
+        ``groundColor``, linear RGB or a hex colour.
     intensity : float >= 0, default 1
     position : (3,) float, default (0, 1, 0)
         Towards the sky, nonzero (three.js normalises the light's position).
     """
 
-    sky_color: tuple[float, ...]
-    ground_color: tuple[float, ...]
+    sky_color: Color
+    ground_color: Color
     intensity: float
     position: tuple[float, ...]
 
     def __init__(
         self,
-        sky_color: ArrayLike = _WHITE,
-        ground_color: ArrayLike = _WHITE,
+        sky_color: ColorLike = _WHITE,
+        ground_color: ColorLike = _WHITE,
         intensity: float = 1.0,
         position: ArrayLike = _UP,
     ) -> None:
-        set_fields(self, locals())
+        set_fields(self, locals(), _color)
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -175,8 +222,8 @@ class DirectionalLight(ValueRecord):
 
     Parameters
     ----------
-    color : (3,) float >= 0, default (1, 1, 1)
-        Linear RGB.
+    color : (3,) float >= 0, int or str, default (1, 1, 1)
+        Linear RGB, or a hex colour (sRGB, decoded; see `MeshPhongMaterial`).
     intensity : float >= 0, default 1
     position : (3,) float, default (0, 1, 0)
         The light's position; only ``position - target`` matters (nonzero).
@@ -184,19 +231,19 @@ class DirectionalLight(ValueRecord):
         ``target.position``.
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     position: tuple[float, ...]
     target: tuple[float, ...]
 
     def __init__(
         self,
-        color: ArrayLike = _WHITE,
+        color: ColorLike = _WHITE,
         intensity: float = 1.0,
         position: ArrayLike = _UP,
         target: ArrayLike = _ZERO,
     ) -> None:
-        set_fields(self, locals())
+        set_fields(self, locals(), _color)
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -206,8 +253,8 @@ class PointLight(ValueRecord):
 
     Parameters
     ----------
-    color : (3,) float >= 0, default (1, 1, 1)
-        Linear RGB.
+    color : (3,) float >= 0, int or str, default (1, 1, 1)
+        Linear RGB, or a hex colour (sRGB, decoded; see `MeshPhongMaterial`).
     intensity : float >= 0, default 1
     distance : float >= 0, default 0
         The reach: physically correct lights fade as ``saturate(1 - (d/distance)^4)^2``,
@@ -218,7 +265,7 @@ class PointLight(ValueRecord):
     position : (3,) float, default (0, 0, 0)
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     distance: float
     decay: float
@@ -226,13 +273,13 @@ class PointLight(ValueRecord):
 
     def __init__(
         self,
-        color: ArrayLike = _WHITE,
+        color: ColorLike = _WHITE,
         intensity: float = 1.0,
         distance: float = 0.0,
         decay: float = 2.0,
         position: ArrayLike = _ZERO,
     ) -> None:
-        set_fields(self, locals())
+        set_fields(self, locals(), _color)
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -244,8 +291,8 @@ class SpotLight(ValueRecord):
 
     Parameters
     ----------
-    color : (3,) float >= 0, default (1, 1, 1)
-        Linear RGB.
+    color : (3,) float >= 0, int or str, default (1, 1, 1)
+        Linear RGB, or a hex colour (sRGB, decoded; see `MeshPhongMaterial`).
     intensity : float >= 0, default 1
     distance : float >= 0, default 0
         As `PointLight`'s.
@@ -259,7 +306,7 @@ class SpotLight(ValueRecord):
         The cone's axis is ``target - position`` (nonzero).
     """
 
-    color: tuple[float, ...]
+    color: Color
     intensity: float
     distance: float
     angle: float
@@ -270,7 +317,7 @@ class SpotLight(ValueRecord):
 
     def __init__(
         self,
-        color: ArrayLike = _WHITE,
+        color: ColorLike = _WHITE,
         intensity: float = 1.0,
         distance: float = 0.0,
         angle: float = math.pi / 3,
@@ -279,7 +326,7 @@ class SpotLight(ValueRecord):
         position: ArrayLike = _UP,
         target: ArrayLike = _ZERO,
     ) -> None:
-        set_fields(self, locals())
+        set_fields(self, locals(), _color)
         _native_scene([self], MeshPhongMaterial(), _ZERO, None, True)
 
 
@@ -340,7 +387,8 @@ class Scene(WorldScene[Light, MeshPhongMaterial]):
 
     Parameters
     ----------
-    lights : iterable of AmbientLight, HemisphereLight, DirectionalLight, PointLight or SpotLight
+    lights : a light or an iterable of AmbientLight, HemisphereLight, DirectionalLight, PointLight
+        or SpotLight
         three.js sums point, spot and directional lights (in that order), then the ambient
         and hemisphere lights.
     material : MeshPhongMaterial, optional
@@ -376,7 +424,7 @@ class Scene(WorldScene[Light, MeshPhongMaterial]):
 
     def __init__(
         self,
-        lights: Iterable[Light] = (),
+        lights: Iterable[Light] | Light = (),
         material: MeshPhongMaterial | None = None,
         *,
         camera_position: ArrayLike = _ZERO,

@@ -145,7 +145,7 @@ def shade(
     (..., 4) or (k, ..., 4) float32 ndarray
         `gs.shade`'s layout: one RGBA plane per name of ``scene.outputs``.
     """
-    p, n, c = vertices(positions, normals, colors)
+    p, n, c = vertices(positions, normals, colors, "glsl.shade")
     leading = p.shape[:-1]
     if c is not None:
         color_material = color_material or "ambient_and_diffuse"
@@ -292,7 +292,12 @@ def rasterize(
     attributes[:, 3:6] = rows(normals, "normals").astype(np.float32)
     if colors is not None:
         # uint8 colours are GL's normalised bytes here too, as in gs.shade and gs.render.
-        given = rows(color_values(array(colors, "colors")), "colors", None, (3, 4))
+        given = rows(
+            color_values(array(colors, "colors"), "colors", "glsl.rasterize"),
+            "colors",
+            None,
+            (3, 4),
+        )
         attributes[:, 6 : 6 + given.shape[1]] = given
         color_material = color_material or "ambient_and_diffuse"
     shaders = raster_shaders(

@@ -191,3 +191,20 @@ def test_option_names_are_case_insensitive() -> None:
             ValueError,  # type: ignore[arg-type]
         ),
     )
+
+
+def test_a_two_sided_result_given_as_an_image_says_to_take_a_side() -> None:
+    scene = gs.Scene(lights=[gs.Light()], two_side=True)
+    both = gs.shade(np.zeros((4, 5, 3)), (0, 0, 1), scene)
+    assert both.shape == (2, 4, 5, 4)
+    text = _message(lambda: gs.Image(both), ValueError)
+    assert "got (2, 4, 5, 4)" in text and "take one side, array[0] (front) or array[1]" in text
+    text = _message(lambda: gs.Image(np.zeros((3, 4, 5, 4))), ValueError)
+    assert "several images" in text and "array[0]" in text
+
+
+@pytest.mark.parametrize("name", ["azdeg", "altdeg", "hsv_min_val", "hsv_max_sat"])
+@pytest.mark.parametrize("value", [float("nan"), float("inf")])
+def test_a_light_source_at_no_angle_is_refused(name: str, value: float) -> None:
+    with pytest.raises(ValueError, match=f"{name} must be a finite number, got {value}"):
+        gs.relief.LightSource(**{name: value})

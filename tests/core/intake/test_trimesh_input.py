@@ -22,11 +22,12 @@ def test_uint8_colours_are_scaled_to_unit_range_in_shade() -> None:
     got = gs.shade(p, n, SCENE, colors=c8)
     np.testing.assert_array_equal(got, gs.shade(p, n, SCENE, colors=c8 / 255.0))
     assert not (got == 1).all()  # before: every vertex (1, 1, 1, 1)
-    # Other dtypes are the values themselves.
-    np.testing.assert_array_equal(
-        gs.shade(p, n, SCENE, colors=c8.astype(np.int64)),
-        gs.shade(p, n, SCENE, colors=c8.astype(np.float64)),
-    )
+    # Other dtypes are the values themselves, and warn when they look like bytes.
+    with pytest.warns(gs.ColorRangeWarning, match="shade colors .* looks like 0-255"):
+        wide = gs.shade(p, n, SCENE, colors=c8.astype(np.int64))
+    with pytest.warns(gs.ColorRangeWarning, match="shade colors .* looks like 0-255"):
+        floats = gs.shade(p, n, SCENE, colors=c8.astype(np.float64))
+    np.testing.assert_array_equal(wide, floats)
 
 
 def test_render_takes_the_meshs_vertex_colours_and_faces_are_optional() -> None:
