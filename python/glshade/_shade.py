@@ -13,6 +13,7 @@ from . import _glshade
 from ._intake import accuracy_choice, flag, out_array, vertices
 from ._model import SCENES, is_scene
 from ._scenes import AnyScene
+from ._transfer import Transfer, transfer_in_place, transfer_name
 from ._typing import Accuracy, ColorMaterialMode, Face, FloatArray
 
 __all__ = ["shade"]
@@ -55,6 +56,7 @@ def shade(
     accuracy: Accuracy = "fast",
     strict: bool = False,
     clamp: bool = True,
+    transfer: Transfer | None = None,
     out: FloatArray | None = None,
 ) -> FloatArray:
     """Light vertices with OpenGL's fixed-function lighting equation (GL 2.1 section 2.14.1).
@@ -105,6 +107,11 @@ def shade(
         they are, for high dynamic range: values above 1 where the terms add up beyond it,
         the primary and the secondary colour each unclamped with ``separate_specular``; the
         same values as with the clamp wherever those lie inside [0, 1], and NaN rows as with it.
+    transfer : {None, "linear", "srgb", "gamma2.2"}
+        The encoding of the RGB of the result, as `render` takes it: None and ``"linear"``
+        return the lighting sums as they are (linear light); ``"srgb"`` encodes them with
+        sRGB's curve (`srgb_encode`: three.js' sRGB output, what a PNG viewer expects);
+        ``"gamma2.2"`` raises them to 1/2.2 (pyrender's output). Alpha is never encoded.
     out : ndarray, optional
         The array to write the result into: exactly the result's dtype and shape, C-contiguous,
         aligned, writeable, and sharing no memory with an input.
@@ -153,6 +160,7 @@ def shade(
     """
     if not is_scene(scene):
         raise TypeError(f"scene must be {SCENES}, got {type(scene)!r}")
+    encoding = transfer_name("linear" if transfer is None else transfer)
     # Before the dask branch, so a lazy call warns once, here, and its tasks get "fast".
     mode = accuracy_choice(accuracy)
     if any(_is_dask(x) for x in (positions, normals, colors)):
@@ -166,7 +174,7 @@ def shade(
         options = {
             "modelview": modelview, "normalize": normalize, "rescale_normal": rescale_normal,
             "color_material": color_material, "color_material_face": color_material_face,
-            "accuracy": mode, "strict": strict, "clamp": clamp,
+            "accuracy": mode, "strict": strict, "clamp": clamp, "transfer": transfer,
         }  # fmt: skip
         lazy = shade_lazily(shade, positions, normals, scene, colors, options)
         return cast(FloatArray, lazy)  # a dask array, which quacks like the ndarray it computes
@@ -183,6 +191,7 @@ def shade(
     result: FloatArray = _glshade.shade(
         p, n, scene._native, colors=c, accuracy=mode, clamp=flag(clamp, "clamp"), out=out, **gl
     )
+    transfer_in_place(result, encoding)
     return result
 
 

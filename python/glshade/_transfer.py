@@ -143,9 +143,16 @@ def apply_transfer(rgba: Any, name: str) -> Any:
     if name == "linear":
         return rgba
     out = rgba.copy()
-    rgb = out[..., :3]
-    if name == "srgb":
-        out[..., :3] = srgb_encode(rgb)
-    else:
-        out[..., :3] = _mirrored(rgb, lambda m: m ** (1 / 2.2))
+    transfer_in_place(out, name)
     return out
+
+
+def transfer_in_place(rgba: Any, name: str) -> None:
+    """Applies the transfer `name` to the RGB of the float array `rgba` (..., 4), in place."""
+    if name == "linear":
+        return
+    rgb = rgba[..., :3]
+    if name == "srgb":
+        rgba[..., :3] = srgb_encode(rgb)
+    else:
+        rgba[..., :3] = _mirrored(rgb, lambda m: m ** (1 / 2.2))

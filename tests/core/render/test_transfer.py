@@ -4,9 +4,11 @@ its published values, and `render(transfer=...)` against the linear render encod
 from __future__ import annotations
 
 import re
+from typing import Any
 
 import numpy as np
 import pytest
+from conftest import require
 
 import glshade as gs
 
@@ -136,3 +138,53 @@ def test_the_transfer_name_is_case_insensitive_and_checked() -> None:
         gs.render(v, f, SCENE, CAMERA, width=8, height=8, transfer="rec709")  # type: ignore[arg-type]
     with pytest.raises(TypeError, match=re.escape("transfer must be a string, got 2.2")):
         gs.render(v, f, SCENE, CAMERA, width=8, height=8, transfer=2.2)  # type: ignore[arg-type]
+
+
+SHADE_SCENES = {
+    "gl, two-sided": gs.Scene(
+        lights=[gs.Light(position=(0.3, 0.4, 1.0, 0.0), specular=(1, 1, 1, 1))],
+        material=gs.Material(specular=(0.5, 0.5, 0.5, 0.7), shininess=20),
+        two_side=True,
+    ),
+    "gltf": gs.gltf.Scene(gs.gltf.PointLight(intensity=8, position=(0, 1, 3))),
+    "threejs": gs.threejs.Scene(gs.threejs.DirectionalLight(position=(1, 2, 3))),
+}
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64])
+@pytest.mark.parametrize("scene", list(SHADE_SCENES))
+@pytest.mark.parametrize("transfer", ["srgb", "gamma2.2"])
+def test_shade_encodes_its_rgb_as_render_does(
+    scene: str, transfer: str, dtype: type, rng: np.random.Generator
+) -> None:
+    """shade(transfer=...) is the linear result with the transfer applied to RGB (IEC 61966-2-1
+    or the power 1/2.2, written out above and here), alpha untouched, in the result's dtype, on
+    every output (a two-sided scene's front and back), with out= too, and NaN rows NaN."""
+    p = rng.normal(size=(200, 3)).astype(dtype)
+    n = rng.normal(size=(200, 3)).astype(dtype)
+    n[7] = np.nan
+    linear = gs.shade(p, n, SHADE_SCENES[scene])
+    encoded = gs.shade(p, n, SHADE_SCENES[scene], transfer=transfer)
+    assert encoded.dtype == dtype and encoded.shape == linear.shape
+    x = linear[..., :3].astype(np.float64)
+    expected = encode_reference(x) if transfer == "srgb" else np.sign(x) * np.abs(x) ** (1 / 2.2)
+    tolerance = 1e-6 if dtype == np.float32 else 1e-14
+    np.testing.assert_allclose(encoded[..., :3], expected, atol=tolerance, rtol=0)
+    np.testing.assert_array_equal(encoded[..., 3], linear[..., 3])
+    assert np.isnan(encoded[..., 7, :]).all() and not np.isnan(np.delete(encoded, 7, -2)).any()
+    out = np.empty_like(encoded)
+    assert gs.shade(p, n, SHADE_SCENES[scene], transfer=transfer, out=out) is out
+    np.testing.assert_array_equal(out, encoded)
+    assert np.array_equal(gs.shade(p, n, SHADE_SCENES[scene], transfer="linear"), linear,
+                          equal_nan=True)  # fmt: skip
+
+
+def test_shade_takes_transfer_lazily_and_checks_its_name() -> None:
+    da: Any = require("dask.array")
+    p = np.zeros((6, 3))
+    lazy = gs.shade(da.from_array(p, chunks=2), (0, 0, 1), SHADE_SCENES["gltf"], transfer="SRGB")
+    np.testing.assert_array_equal(
+        lazy.compute(), gs.shade(p, (0, 0, 1), SHADE_SCENES["gltf"], transfer="srgb")
+    )
+    with pytest.raises(ValueError, match=r"transfer must be 'linear', 'srgb' or 'gamma2\.2'"):
+        gs.shade(p, (0, 0, 1), SHADE_SCENES["gltf"], transfer="sRGB2")  # type: ignore[arg-type]
