@@ -11,7 +11,7 @@ import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
 from ._image import Image
-from ._intake import array, number, one_of
+from ._intake import array, color, number, one_of, warn_if_bytes
 from ._png import encode_png
 from ._records import ValueRecord
 from ._typing import Float64Array
@@ -19,9 +19,13 @@ from ._typing import Float64Array
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["Comparison", "compare"]
+__all__ = ["Comparison", "compare", "picture"]
 
 Alpha = Literal["straight", "premultiplied"]
+DepthConvention = Literal["window", "linear"]
+# The default tolerance between float images: about a fortieth of an 8-bit step, far above
+# float32's rounding of values in [0, 1] (6e-8).
+_FLOAT_TOLERANCE = 1e-4
 
 # The kinds of difference, as `Comparison.labels` numbers them.
 KINDS = (
@@ -41,19 +45,31 @@ _MARKS = {
     6: (1.0, 0.0, 1.0),
 }
 _MARK_NAMES = {3: "blue", 4: "dark blue", 5: "cyan", 6: "magenta"}
-# The grey of agreement: this share of the reference's luminance (Rec. 709 weights).
+# The grey of agreement: _SAME_LOW plus this share of the reference's luminance (Rec. 709
+# weights), from dark grey to mid grey; where neither image covers, a light grey above it. The
+# heatmap is opaque, so it reads alike on a light and a dark page.
 _DIM = 0.35
+_SAME_LOW = 0.15
+_NEITHER = (0.85, 0.85, 0.85)
 _LUMINANCE = (0.2126, 0.7152, 0.0722)
-# Colour differences span the tolerance to 10**_DECADES times it on the heatmap's log scale.
+# Colour differences span the tolerance to 10**_DECADES times it on the heatmap's log scales.
 _DECADES = 3
-_ORANGE = (1.0, 0.5, 0.0)
+# Each scale's ends (RGB at the tolerance, at 10**_DECADES times it and beyond): interior
+# differences yellow to dark red, edge differences light to dark green.
+_SCALES = {
+    1: ((1.0, 0.85, 0.0), (0.7, 0.0, 0.0)),
+    2: ((0.55, 1.0, 0.35), (0.0, 0.4, 0.0)),
+}
+_SCALE_NAMES = {1: ("yellow", "dark red"), 2: ("light green", "dark green")}
 
 
-def _error_colours(t: NDArray[np.floating[Any]]) -> Float64Array:
-    """(..., 3) RGB of colour differences at `t` = log10(error / tolerance) / 3 in [0, 1]:
-    orange (1, 0.5, 0) at the tolerance, through salmon, to white (1, 1, 1) at 1000 times it."""
-    t = np.clip(np.asarray(t, np.float64), 0.0, 1.0)
-    rgb: Float64Array = np.stack([np.ones_like(t), 0.5 * (1 - t) + t * t, t * t], axis=-1)
+def _error_colours(t: NDArray[np.floating[Any]], kind: int = 1) -> Float64Array:
+    """(..., 3) RGB of colour differences of `kind` (1 interior, 2 edge) at `t` =
+    log10(error / tolerance) / 3 in [0, 1]: the straight line in RGB between the scale's ends,
+    `_SCALES[kind]`, so every error beyond 1000 times the tolerance has the dark end's colour."""
+    t = np.clip(np.asarray(t, np.float64), 0.0, 1.0)[..., None]
+    low, high = (np.array(end) for end in _SCALES[kind])
+    rgb: Float64Array = low + (high - low) * t
     return rgb
 
 
@@ -89,13 +105,19 @@ class Comparison(ValueRecord):
         The largest differences, largest first: ``row``, ``column``, ``kind``, ``error`` (the
         largest channel's; 1 for coverage), ``image`` and ``reference`` (the pixel values).
     heatmap : Image
-        (height, width, 4) float32: grey where the images agree (0.35 times the reference's
-        luminance, Rec. 709 weights); colour differences from orange (1, 0.5, 0) at the
-        tolerance to white at 1000 times it, on a log scale of the largest channel's error
-        (G = 0.5 (1 - t) + t², B = t², t = log10(error / tolerance) / 3); depth differences
-        blue (0.2, 0.4, 1) in the interior, dark blue (0.1, 0.2, 0.6) on edges; coverage
-        differences cyan (interior) and magenta (edge); alpha 1 where either image covers,
-        0 where neither does.
+        (height, width, 4) float32, opaque (alpha 1), so it reads alike on a light and a dark
+        page: grey where the images agree (0.15 plus 0.35 times the reference's luminance,
+        Rec. 709 weights: 0.15 to 0.5); light grey (0.85) where neither covers; colour
+        differences on a log scale of the largest channel's error, t = log10(error /
+        tolerance) / 3 clipped to [0, 1], along a straight line in RGB: in the interior from
+        yellow (1, 0.85, 0) at the tolerance to dark red (0.7, 0, 0) at 1000 times it and
+        beyond, on edges from light green (0.55, 1, 0.35) to dark green (0, 0.4, 0); depth
+        differences blue (0.2, 0.4, 1) in the interior, dark blue (0.1, 0.2, 0.6) on edges;
+        coverage differences cyan (interior) and magenta (edge).
+    notes : tuple of str
+        What `compare` chose or assumed that a reader should know: the default tolerance of
+        an integer image, depths converted from eye distances, coverage from a background
+        colour, or an image that counts as covered everywhere (with what to pass instead).
 
     Notes
     -----
@@ -114,6 +136,7 @@ class Comparison(ValueRecord):
     counts: dict[str, int]
     largest: list[dict[str, Any]] = field(repr=False)
     heatmap: Image = field(repr=False)
+    notes: tuple[str, ...] = ()
 
     KINDS = KINDS
 
@@ -130,6 +153,7 @@ class Comparison(ValueRecord):
         ]
         found = [f"{n} {kind}" for kind, n in self.counts.items() if n]
         lines.append("differences: " + (", ".join(found) if found else "none"))
+        lines.extend(f"note: {note}" for note in self.notes)
         for d in self.largest[:3]:
             lines.append(
                 f"  ({d['row']}, {d['column']}) {d['kind']}: error {d['error']:.3g}, "
@@ -151,8 +175,11 @@ class Comparison(ValueRecord):
         heatmap = base64.b64encode(self._repr_png_()).decode("ascii")
         # The summary's first line; its second, the counts, is the table below; the largest
         # differences' lines are long: folded, a click away.
-        head, _, *listed = str(self).splitlines()
-        summary = f"<div>{html.escape(head)}</div>"
+        head, _, *rest = str(self).splitlines()
+        listed = [line for line in rest if not line.startswith("note: ")]
+        summary = f"<div>{html.escape(head)}</div>" + "".join(
+            f"<div>{html.escape(line)}</div>" for line in rest if line.startswith("note: ")
+        )
         text = html.escape("\n".join(listed))
         largest = (
             f'<details><summary>largest differences</summary><pre style="margin:0">{text}</pre>'
@@ -179,9 +206,9 @@ class Comparison(ValueRecord):
         )
 
     def plot(self, ax: Axes | None = None, *, legend: bool = True) -> Axes:
-        """Draws the heatmap with matplotlib, with a colour bar for the colour differences
-        (orange at the tolerance to white at 1000 times it, log scale) and a legend of every
-        kind's colour and count.
+        """Draws the heatmap with matplotlib, with colour bars for the colour differences
+        (interior and edge, log scales from the tolerance to 1000 times it) and a legend of
+        every kind's colour and count.
 
         Parameters
         ----------
@@ -231,16 +258,18 @@ class Comparison(ValueRecord):
         figure = ax.get_figure()
         assert figure is not None  # an Axes that has been drawn into belongs to a figure
         if self.tolerance > 0:
-            cmap = ListedColormap(_error_colours(np.linspace(0, 1, 1024)), "glshade-compare")
-            norm = LogNorm(self.tolerance, self.tolerance * 10.0**_DECADES)
-            bar = figure.colorbar(ScalarMappable(norm, cmap), ax=ax, fraction=0.05, pad=0.02)
-            ticks = self.tolerance * 10.0 ** np.arange(_DECADES + 1)
-            bar.set_ticks(list(ticks), labels=[f"{t:.3g}" for t in ticks])
-            bar.ax.minorticks_off()
-            bar.set_label("colour difference (largest channel), log scale")
+            for kind, where in ((1, "interior"), (2, "edge")):
+                colours = _error_colours(np.linspace(0, 1, 1024), kind)
+                cmap = ListedColormap(colours, f"glshade-compare-{where}")
+                norm = LogNorm(self.tolerance, self.tolerance * 10.0**_DECADES)
+                bar = figure.colorbar(ScalarMappable(norm, cmap), ax=ax, fraction=0.05, pad=0.02)
+                ticks = self.tolerance * 10.0 ** np.arange(_DECADES + 1)
+                bar.set_ticks(list(ticks), labels=[f"{t:.3g}" for t in ticks])
+                bar.ax.minorticks_off()
+                bar.set_label(f"colour difference, {where} (largest channel), log scale")
         handles = [
             Patch(
-                facecolor="none" if rgb is None else rgb,
+                facecolor=rgb,
                 edgecolor="0.5",
                 # The colour bar states the colour differences' colours.
                 label=f"{name} ({count:,})" + ("" if name.startswith("color") else f": {meaning}"),
@@ -257,28 +286,35 @@ class Comparison(ValueRecord):
         return ax
 
 
-def _legend(c: Comparison) -> list[tuple[tuple[float, float, float] | None, str, int, str]]:
-    """(colour or None for transparent, kind, pixels, what the colour means), as the heatmap
-    draws each kind."""
-    covered = np.asarray(c.heatmap)[..., 3] > 0
-    same = int(np.count_nonzero(covered & (c.labels == 0)))
+def _legend(c: Comparison) -> list[tuple[tuple[float, float, float], str, int, str]]:
+    """(colour, kind, pixels, what the colour means), as the heatmap draws each kind; a colour
+    difference's colour is its scale's at the tolerance."""
+    differ = sum(n for kind, n in c.counts.items() if kind.startswith(("color", "depth")))
+    same = c.compared - differ  # of the pixels both cover
+    uncovered = sum(n for kind, n in c.counts.items() if kind.startswith("coverage"))
+    neither = c.labels.size - c.compared - uncovered
     top = c.tolerance * 10.0**_DECADES
-    colour = (
-        f"orange {_rgb_text(_ORANGE)} at the tolerance {c.tolerance:g} to white at "
-        f"{top:g}, log scale"
-        if c.tolerance > 0
-        else "white (tolerance 0)"
-    )
-    grey = (_DIM / 2,) * 3
-    rows: list[tuple[tuple[float, float, float] | None, str, int, str]] = [
-        (grey, "same", same, f"grey, {_DIM:g} x the reference's luminance"),
-        (_ORANGE, "color, interior", c.counts["color, interior"], colour),
-        (_ORANGE, "color, edge", c.counts["color, edge"], colour),
+    rows: list[tuple[tuple[float, float, float], str, int, str]] = [
+        (
+            (_SAME_LOW + _DIM / 2,) * 3,
+            "same",
+            same,
+            f"grey, {_SAME_LOW:g} + {_DIM:g} x the reference's luminance",
+        )
     ]
+    for kind in (1, 2):
+        low, high = _SCALES[kind]
+        names = _SCALE_NAMES[kind]
+        meaning = (
+            f"{names[0]} {_rgb_text(low)} at the tolerance {c.tolerance:g} to {names[1]} "
+            f"{_rgb_text(high)} at {top:g} and beyond, log scale"
+            if c.tolerance > 0
+            else f"{names[1]} {_rgb_text(high)} (tolerance 0)"
+        )
+        rows.append((low, KINDS[kind], c.counts[KINDS[kind]], meaning))
     for k, rgb in _MARKS.items():
         rows.append((rgb, KINDS[k], c.counts[KINDS[k]], f"{_MARK_NAMES[k]} {_rgb_text(rgb)}"))
-    neither = int(np.count_nonzero(~covered))
-    rows.append((None, "neither covers", neither, "transparent"))
+    rows.append((_NEITHER, "neither covers", neither, f"light grey {_rgb_text(_NEITHER)}"))
     return rows
 
 
@@ -286,42 +322,63 @@ def _rgb_text(rgb: tuple[float, float, float]) -> str:
     return "(" + ", ".join(f"{v:g}" for v in rgb) + ")"
 
 
-def _css_swatch(rgb: tuple[float, float, float] | None) -> str:
-    if rgb is None:  # transparent: a chequer shows through
-        return "background:repeating-conic-gradient(#ccc 0 25%,#fff 0 50%) 0 0/6px 6px"
+def _css_swatch(rgb: tuple[float, float, float]) -> str:
     r, g, b = (round(255 * v) for v in rgb)
     return f"background:rgb({r},{g},{b})"
 
 
 def _html_scale(tolerance: float) -> str:
-    """The colour differences' scale as HTML: a strip of the heatmap's own colours, 256 pixels
-    from the tolerance to 1000 times it, and its decades."""
+    """The colour differences' scales as HTML: for the interior and for edges, a strip of the
+    heatmap's own colours, 256 pixels from the tolerance to 1000 times it, and its decades
+    below, the first and last aligned with the strip's ends so that none is cut off."""
     if not tolerance > 0:
-        return "<div>tolerance 0: every colour difference is white</div>"
-    strip = np.ones((12, 256, 4))
-    strip[..., :3] = _error_colours(np.linspace(0, 1, 256))[None]
-    data = base64.b64encode(encode_png(strip)).decode("ascii")
+        return "<div>tolerance 0: every colour difference has its scale's dark end</div>"
+    strips = []
+    for kind, where in ((1, "interior"), (2, "edge")):
+        strip = np.ones((12, 256, 4))
+        strip[..., :3] = _error_colours(np.linspace(0, 1, 256), kind)[None]
+        data = base64.b64encode(encode_png(strip)).decode("ascii")
+        strips.append(
+            f'<div style="display:flex;align-items:center;gap:6px">'
+            f'<img src="data:image/png;base64,{data}" width="256" height="12" '
+            f'alt="colour scale, {where}" style="display:block">{where}</div>'
+        )
     ticks = "".join(
-        f'<span style="position:absolute;top:14px;left:{round(255 * k / _DECADES)}px;'
-        f'transform:translateX(-50%)">{tolerance * 10.0**k:.3g}</span>'
+        f'<span style="position:absolute;top:0;left:{round(255 * k / _DECADES)}px;'
+        f'transform:translateX({-100 * k // _DECADES}%)">{tolerance * 10.0**k:.3g}</span>'
         for k in range(_DECADES + 1)
     )
     return (
         '<div style="margin-top:8px">colour difference (largest channel), log scale:</div>'
-        '<div style="position:relative;width:256px;height:30px;margin:2px 16px">'
-        f'<img src="data:image/png;base64,{data}" width="256" height="12" '
-        f'alt="colour scale" style="display:block">{ticks}</div>'
+        f'<div style="margin:2px 0">{"".join(strips)}'
+        f'<div style="position:relative;width:256px;height:16px">{ticks}</div></div>'
     )
 
 
-def _as_float(value: ArrayLike, name: str) -> Float64Array:
-    """(height, width, 3|4) as float64 in [0, 1]: uint8 scaled by 1/255, uint16 by 1/65535."""
+# Integer pictures as GL's unsigned normalised formats read them: their value over the largest.
+_STEPS = {np.dtype(np.uint8): 255.0, np.dtype(np.uint16): 65535.0}
+
+
+def picture(value: ArrayLike, name: str, owner: str = "compare") -> tuple[Float64Array, float]:
+    """(height, width, 3|4) as float64 in [0, 1], and its quantisation step: uint8 scaled by
+    1/255 (step 1/255), uint16 by 1/65535, floats as they are (step 0, a `ColorRangeWarning`
+    naming `owner` where they look like 0-255 bytes)."""
     a = array(value, name)
     if a.ndim != 3 or a.shape[2] not in (3, 4):
         raise ValueError(f"{name} must have shape (height, width, 3) or (..., 4), got {a.shape}")
-    scale = {np.dtype(np.uint8): 255.0, np.dtype(np.uint16): 65535.0}.get(a.dtype, 1.0)
-    result: Float64Array = a.astype(np.float64) / scale
-    return result
+    if a.shape[0] == 0 or a.shape[1] == 0:
+        raise ValueError(f"{name} must have at least one pixel, got shape {a.shape}")
+    if a.dtype.kind != "f" and a.dtype not in _STEPS:
+        raise TypeError(
+            f"{name} must be float (values in [0, 1]), uint8 (0-255) or uint16 (0-65535), got "
+            f"dtype {a.dtype}: cast 0-255 values with .astype(np.uint8), or divide by the "
+            "largest value for floats"
+        )
+    if a.dtype.kind == "f":
+        warn_if_bytes(a, name, owner)
+    largest = _STEPS.get(a.dtype, 1.0)
+    result: Float64Array = a.astype(np.float64) / largest
+    return result, (1.0 / largest if a.dtype in _STEPS else 0.0)
 
 
 def _straight(a: Float64Array, alpha: object, name: str) -> Float64Array:
@@ -333,13 +390,97 @@ def _straight(a: Float64Array, alpha: object, name: str) -> Float64Array:
     return out
 
 
-def _depth(value: ArrayLike | None, shape: tuple[int, int], name: str) -> Float64Array | None:
+def _window_depth(
+    value: ArrayLike | None,
+    shape: tuple[int, int],
+    name: str,
+    convention: str,
+    clip: tuple[float | None, float | None],
+) -> Float64Array | None:
+    """A depth image as GL window depth (1 where nothing is drawn), from the `convention` it
+    was given in: "window" as it is; "linear", the eye distance along the view axis with 0
+    where nothing is drawn (pyrender's depth), through a perspective projection's near and
+    far planes (`clip`; far None or inf: an infinite far plane, as pyrender's ``zfar=None``).
+    A depth that cannot be in its stated convention raises ValueError, saying which it looks
+    like."""
     if value is None:
         return None
     d = array(value, name).astype(np.float64)
     if d.shape != shape:
         raise ValueError(f"{name} must have shape {shape} (the images'), got {d.shape}")
-    return d
+    option = "depth_convention" if name == "depth" else "reference_depth_convention"
+    finite = d[np.isfinite(d)]
+    if convention == "window":
+        if finite.size and (finite.max() > 1.0 or finite.min() < 0.0):
+            raise ValueError(
+                f"{name} has values in [{finite.min():g}, {finite.max():g}], outside GL window "
+                f"depth's [0, 1]: a linear eye distance, as pyrender's renderer returns it? pass "
+                f"{option}='linear' with near= and far= (the camera's znear and zfar)"
+            )
+        if (finite == 0.0).any() and not (finite == 1.0).any():
+            raise ValueError(
+                f"{name} is 0 at some pixels and 1 at none: linear eye distances, 0 where nothing "
+                f"is drawn (pyrender's depth), rather than window depths, 1 where nothing is? "
+                f"pass {option}='linear' with near= and far=; for window depths, clear to 1"
+            )
+        return d
+    near, far = clip
+    if near is None:
+        raise ValueError(
+            f"{option}='linear' needs near= (and far=, None for an infinite far plane): the "
+            "camera's clip planes turn eye distances into window depths"
+        )
+    if finite.size and finite.min() < 0.0:
+        raise ValueError(f"{name} as linear eye distances must be >= 0, got {finite.min():g}")
+    if (finite == 1.0).any() and not (finite == 0.0).any() and finite.max() <= 1.0:
+        raise ValueError(
+            f"{name} is 1 at some pixels and 0 at none, within [0, 1]: window depths rather "
+            f"than eye distances (0 where nothing is drawn)? pass {option}='window'"
+        )
+    drawn = d > 0.0
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if far is None or far == np.inf:
+            window = 1.0 - near / d
+        else:
+            window = far * (d - near) / (d * (far - near))
+    result: Float64Array = np.where(drawn, window, 1.0)
+    return result
+
+
+def _clip_planes(near: object, far: object) -> tuple[float | None, float | None]:
+    """`near` and `far` checked: 0 < near < far (far may be None or inf)."""
+    if near is None:
+        if far is not None:
+            raise ValueError("far is given without near: give both, the camera's znear and zfar")
+        return None, None
+    n = number(near, "near")
+    f = None if far is None else number(far, "far")
+    if not 0 < n < np.inf:
+        raise ValueError(f"near must be a finite number > 0, got {n}")
+    if f is not None and not f > n:
+        raise ValueError(f"far must be greater than near ({n:g}), got {f}")
+    return n, f
+
+
+def _covered(
+    img: Float64Array,
+    d: Float64Array | None,
+    background: Float64Array | None,
+    within: float,
+) -> tuple[NDArray[np.bool_], str]:
+    """Where `img` draws something, and from what: its depth (below 1) when given; else its
+    alpha (above 0) when some pixel is transparent; else, with a `background` colour, the
+    pixels whose RGB differs from it by more than `within`; else every pixel."""
+    shape = img.shape[:2]
+    if d is not None:
+        return d < 1.0, "depth"
+    if img.shape[2] == 4 and (img[..., 3] <= 0).any():
+        result: NDArray[np.bool_] = img[..., 3] > 0
+        return result, "alpha"
+    if background is not None:
+        differs: NDArray[np.bool_] = np.abs(img[..., :3] - background[:3]).max(axis=2) > within
+        return differs, "background"
+    return np.ones(shape, bool), "everywhere"
 
 
 def _neighbours_differ(mask: NDArray[Any]) -> NDArray[np.bool_]:
@@ -408,9 +549,14 @@ def compare(
     image: ArrayLike,
     reference: ArrayLike,
     *,
-    tolerance: float = 1e-4,
+    tolerance: float | None = None,
     depth: ArrayLike | None = None,
     reference_depth: ArrayLike | None = None,
+    depth_convention: DepthConvention = "window",
+    reference_depth_convention: DepthConvention | None = None,
+    near: float | None = None,
+    far: float | None = None,
+    background: ArrayLike | None = None,
     depth_tolerance: float = 1e-5,
     depth_jump: float = 1e-2,
     depth_shift: float = 1.0,
@@ -422,21 +568,47 @@ def compare(
 ) -> Comparison:
     """Compares an image with a reference and explains where and why they differ.
 
-    A pixel is covered where its depth is below 1 (GL's cleared depth) when depths are given,
-    else where its alpha is above 0 (4 channels), else always. Colours are compared as
-    straight (not premultiplied) RGBA.
+    A pixel is covered where its depth is below 1 (GL's cleared depth) when depths are given;
+    else, in an image with transparent pixels, where its alpha is above 0; else, given a
+    `background` colour, where its colour differs from it by more than the tolerance; else
+    always. Colours are compared as straight (not premultiplied) RGBA.
 
     Parameters
     ----------
     image, reference : (height, width, 3) or (height, width, 4) array
-        Float images in [0, 1], or uint8 (scaled by 1/255) or uint16 (1/65535); the same shape.
-        ``gs.render``'s and ``gs.glsl.render``'s images, a framebuffer read back, a PNG.
-    tolerance : float
-        Per channel: a larger difference counts.
+        Float images in [0, 1], or uint8 (scaled by 1/255) or uint16 (1/65535); the same
+        height and width, at least one pixel. An RGBA image against an RGB one compares RGB
+        (the RGBA image's coverage still from its alpha). ``gs.render``'s and
+        ``gs.glsl.render``'s images, a framebuffer read back, a PNG. Other integer dtypes
+        raise (cast 0-255 values to uint8); float values that look like 0-255 bytes warn
+        (`ColorRangeWarning`).
+    tolerance : float, optional
+        Per channel: a larger difference counts. None (the default): 1e-4 between float
+        images; with a uint8 or uint16 image, half its quantisation step more (0.5/255 +
+        1e-4 for 8 bits), so an 8-bit copy of the same picture is within it. The result's
+        `tolerance` and `notes` state the value used.
     depth, reference_depth : (height, width) float, optional
-        Window depths in [0, 1] (1 where nothing is drawn): coverage from them, and pixels
-        where they differ beyond `depth_tolerance` and `depth_shift`'s allowance are told
-        apart as depth differences.
+        Depths in the convention `depth_convention` and `reference_depth_convention` name:
+        coverage from them, and pixels where they differ beyond `depth_tolerance` and
+        `depth_shift`'s allowance are told apart as depth differences.
+    depth_convention : {"window", "linear"}
+        How `depth` is given: ``"window"``, GL's window depth in [0, 1], 1 where nothing is
+        drawn (`render`'s and a GL depth buffer's); ``"linear"``, the eye distance along the
+        view axis, 0 where nothing is drawn (what pyrender's ``OffscreenRenderer.render``
+        returns), converted to window depth with `near` and `far`. A depth that cannot be in
+        its stated convention (window depths beyond 1, or 0 with no 1; eye distances of 1
+        with no 0) raises ValueError naming the other.
+    reference_depth_convention : {None, "window", "linear"}
+        How `reference_depth` is given; None: `depth_convention`.
+    near, far : float, optional
+        The perspective camera's near and far planes (pyrender's ``znear`` and ``zfar``) for
+        linear depths; far None or inf: an infinite far plane. Depth tolerances stay in
+        window depth.
+    background : (3,) or (4,) float, optional
+        The colour an opaque image is cleared to (pyrender's ``bg_color``, a framebuffer's
+        clear colour): in an image without transparent pixels and without a depth, the pixels
+        of this colour (within the tolerance, RGB) are not covered, so its silhouettes are
+        edges and coverage differences. uint8 is divided by 255.
     depth_tolerance : float
         The depth difference that counts where the depth is flat; it grows with the depth's
         slope (see `depth_shift`).
@@ -476,7 +648,8 @@ def compare(
     Raises
     ------
     ValueError, TypeError
-        For images or depths of other shapes or dtypes, or bad parameters, naming them.
+        For images or depths of other shapes or dtypes, empty images, depths outside their
+        stated convention, or bad parameters, naming them.
 
     Examples
     --------
@@ -487,13 +660,28 @@ def compare(
     >>> result.counts["color, interior"] + result.counts["color, edge"], result.within_tolerance
     (1, 0.75)
     """
-    a = _as_float(image, "image")
-    r = _as_float(reference, "reference")
-    if a.shape != r.shape:
-        raise ValueError(f"image and reference must have one shape, got {a.shape} and {r.shape}")
+    (a, step_a), (r, step_r) = picture(image, "image"), picture(reference, "reference")
+    if a.shape[:2] != r.shape[:2]:
+        raise ValueError(
+            f"image and reference must have one height and width, got {a.shape} and {r.shape}"
+        )
     a = _straight(a, alpha, "alpha")
     r = _straight(r, alpha if reference_alpha is None else reference_alpha, "reference_alpha")
-    tol = number(tolerance, "tolerance")
+    notes: list[str] = []
+    channels = min(a.shape[2], r.shape[2])
+    if a.shape[2] != r.shape[2]:
+        notes.append("one image has alpha and the other none: RGB compared")
+    if tolerance is None:
+        step = max(step_a, step_r)
+        tol = _FLOAT_TOLERANCE + step / 2
+        if step:
+            bits = 8 if step > 1 / 1000 else 16
+            notes.append(
+                f"tolerance {tol:.3g}: half a step of the {bits}-bit image (0.5/{1 / step:g}) "
+                f"plus {_FLOAT_TOLERANCE:g}"
+            )
+    else:
+        tol = number(tolerance, "tolerance")
     if not tol >= 0:
         raise ValueError(f"tolerance must be >= 0, got {tol}")
     if isinstance(edge_width, bool) or not isinstance(edge_width, int) or edge_width < 0:
@@ -511,18 +699,34 @@ def compare(
         if not 0 <= value < np.inf:
             raise ValueError(f"{name} must be a finite number >= 0, got {value}")
     shape = a.shape[:2]
-    da = _depth(depth, shape, "depth")
-    dr = _depth(reference_depth, shape, "reference_depth")
-
-    def coverage(img: Float64Array, d: Float64Array | None) -> NDArray[np.bool_]:
-        if d is not None:
-            return d < 1.0
-        if img.shape[2] == 4:
-            result: NDArray[np.bool_] = img[..., 3] > 0
-            return result
-        return np.ones(shape, bool)
-
-    ca, cr = coverage(a, da), coverage(r, dr)
+    conventions = ("window", "linear")
+    own = one_of(depth_convention, "depth_convention", conventions)
+    theirs = (
+        own
+        if reference_depth_convention is None
+        else one_of(reference_depth_convention, "reference_depth_convention", conventions)
+    )
+    clip = _clip_planes(near, far)
+    da = _window_depth(depth, shape, "depth", own, clip)
+    dr = _window_depth(reference_depth, shape, "reference_depth", theirs, clip)
+    for name, d, convention in (("depth", da, own), ("reference_depth", dr, theirs)):
+        if d is not None and convention == "linear":
+            notes.append(f"{name}: eye distances, as window depths with near {clip[0]:g}, far "
+                         f"{'inf' if clip[1] is None else f'{clip[1]:g}'}")  # fmt: skip
+    clear = None if background is None else _background(background)
+    ca, how_a = _covered(a, da, clear, tol)
+    cr, how_r = _covered(r, dr, clear, tol)
+    a, r = a[..., :channels], r[..., :channels]
+    for name, how, img in (("image", how_a, a), ("reference", how_r, r)):
+        border = _border_colour(img, tol) if how == "everywhere" else None
+        if border is not None:
+            notes.append(
+                f"{name} has no transparent pixel and no depth, so all of it counts as covered, "
+                f"and its border is one colour, {_rgb_text(border)}: if that is its background, "
+                f"pass background={_rgb_text(border)} to tell its silhouettes"
+            )
+        if how == "background":
+            notes.append(f"{name}: covered where its colour is not the background")
     silhouette = _neighbours_differ(ca) | _neighbours_differ(cr)
     for d, c in ((da, ca), (dr, cr)):
         if d is not None:
@@ -541,7 +745,6 @@ def compare(
     counts = {kind: int(np.count_nonzero(labels == k)) for k, kind in enumerate(KINDS) if k}
 
     compared = error[both]
-    channels = a.shape[2]
     empty = np.zeros(channels)
     stats = {p: np.percentile(compared, p, axis=0) if len(compared) else empty for p in percentiles}
     within = float((worst[both] <= tol).mean()) if both.any() else 1.0
@@ -574,7 +777,30 @@ def compare(
         counts=counts,
         largest=listed,
         heatmap=_heatmap(r, worst, labels, ca | cr, tol),
+        notes=tuple(notes),
     )
+
+
+def _border_colour(img: Float64Array, tol: float) -> tuple[float, float, float] | None:
+    """The RGB of `img`'s outermost pixels when they are all one colour (within `tol`): most
+    likely a background that an opaque picture was cleared to; else None."""
+    edges = np.concatenate([img[0, :, :3], img[-1, :, :3], img[:, 0, :3], img[:, -1, :3]])
+    first = edges[0]
+    if img.shape[0] < 3 or img.shape[1] < 3 or np.abs(edges - first).max() > tol:
+        return None
+    r, g, b = (round(float(v), 4) for v in first)
+    return (r, g, b)
+
+
+def _background(value: ArrayLike) -> Float64Array:
+    """The `background` colour as (3,) or (4,) float64, by the colour intake's rules."""
+    b = color(value, "background")
+    if b.shape not in ((3,), (4,)):
+        raise ValueError(f"background must have shape (3,) or (4,), got shape {b.shape}")
+    if not np.isfinite(b).all():
+        raise ValueError(f"background must be finite, got {b.tolist()}")
+    warn_if_bytes(b, "background", "compare")
+    return b
 
 
 def _heatmap(
@@ -584,14 +810,15 @@ def _heatmap(
     covered: NDArray[np.bool_],
     tol: float,
 ) -> Image:
-    out = np.zeros((*labels.shape, 4), np.float32)
-    luminance = reference[..., :3] @ np.array(_LUMINANCE)
-    out[..., :3] = (_DIM * luminance)[..., None]
-    colour = (labels == 1) | (labels == 2)
-    out[colour, :3] = _error_colours(_scale_position(worst[colour], tol))
+    out = np.ones((*labels.shape, 4), np.float32)
+    luminance = np.clip(reference[..., :3] @ np.array(_LUMINANCE), 0.0, 1.0)
+    out[..., :3] = (_SAME_LOW + _DIM * luminance)[..., None]
+    out[~covered, :3] = _NEITHER
+    for kind in (1, 2):
+        where = labels == kind
+        out[where, :3] = _error_colours(_scale_position(worst[where], tol), kind)
     for kind, rgb in _MARKS.items():
         out[labels == kind, :3] = rgb
-    out[..., 3] = covered
     return out.view(Image)
 
 

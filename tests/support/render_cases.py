@@ -75,6 +75,25 @@ def vertex_colours(n: int) -> np.ndarray:
     return np.c_[rng.uniform(0.1, 1.0, (n, 3)), np.ones(n)]
 
 
+def face_edges(image: np.ndarray) -> np.ndarray:
+    """Pixels of a flat-shaded image with an 8-neighbour of another colour (beyond 1e-6): where
+    two faces meet, and a pixel centre on their shared edge may go to either face (GL's rule
+    is exact only for the same vertex positions, and a clipper adds its own vertices)."""
+    padded = np.pad(image, ((1, 1), (1, 1), (0, 0)), mode="edge")
+    h, w = image.shape[:2]
+    around = [padded[1 + a : 1 + a + h, 1 + b : 1 + b + w] for a in (-1, 0, 1) for b in (-1, 0, 1)]
+    result: np.ndarray = np.any([np.abs(x - image).max(axis=-1) > 1e-6 for x in around], axis=0)
+    return result
+
+
+def named(mask: np.ndarray, error: np.ndarray, count: int = 8) -> str:
+    """The pixels of `mask` as (row, column): error, the largest first, for a failure's
+    message."""
+    rows, columns = np.nonzero(mask)
+    order = np.argsort(-error[rows, columns])[:count]
+    return ", ".join(f"({rows[i]}, {columns[i]}): {error[rows[i], columns[i]]:.2e}" for i in order)
+
+
 def on_edges(covered: np.ndarray) -> np.ndarray:
     """Pixels with a differently covered neighbour (8-connected)."""
     padded = np.pad(covered, 1, mode="edge")

@@ -63,7 +63,7 @@ def test_uint8_and_premultiplied_images_compare_as_their_straight_colours() -> N
 
 def test_bad_arguments_name_themselves() -> None:
     a = np.zeros((4, 4, 4))
-    with pytest.raises(ValueError, match="image and reference must have one shape"):
+    with pytest.raises(ValueError, match="image and reference must have one height and width"):
         gs.compare(a, np.zeros((4, 5, 4)))
     with pytest.raises(ValueError, match=r"image must have shape \(height, width, 3\)"):
         gs.compare(np.zeros((4, 4)), a)
