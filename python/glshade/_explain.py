@@ -3,24 +3,60 @@ user's image, found by search, with the residual before and after."""
 
 from __future__ import annotations
 
+import base64
 import dataclasses
+import functools
+import html
 import itertools
+import math
 from typing import Any
 
 import numpy as np
-from numpy.typing import ArrayLike
+from numpy.typing import ArrayLike, NDArray
 
 from ._camera import Camera
-from ._explain_search import JOINT, MARGIN, PROVOKING, SWITCHES, Search
+from ._compare import picture as picture_values
+from ._explain_search import AMBIENT_RANGE, JOINT, MARGIN, PROVOKING, SCALE_RANGE, SWITCHES, Search
 from ._image import Image
 from ._intake import one_of
+from ._png import encode_png
 from ._render_input import render_input
 from ._scene import Scene
 
 __all__ = ["Explanation", "explain"]
 
-# A residual above this (2/255 on average) is not an explanation.
-EXPLAINED = 2.0 / 255
+# What two float renderers of one convention differ by on average, away from silhouettes
+# (float32 arithmetic, another rasteriser's sample positions inside a face).
+FLOAT_NOISE = 2e-4
+# How many of the closest candidates an explanation keeps.
+CANDIDATES = 3
+
+
+def quantisation_step(values: NDArray[Any], step: float) -> float:
+    """The step the picture's values were rounded to: `step` for an integer picture; for a
+    float one, 1/255 or 1/65535 when every finite value is a multiple of it (an 8- or 16-bit
+    picture divided), else 0."""
+    if step:
+        return step
+    finite = values[np.isfinite(values)]
+    for levels in (255.0, 65535.0):
+        scaled = finite * levels
+        if finite.size and np.abs(scaled - np.round(scaled)).max() < 1e-3:
+            return 1.0 / levels
+    return 0.0
+
+
+def silhouette(alpha: NDArray[Any]) -> NDArray[np.bool_]:
+    """Pixels of a render's coverage (alpha > 0) with an 8-neighbour of the other coverage:
+    where other renderers antialias or sample differently."""
+    covered = alpha > 0
+    padded = np.pad(covered, 1, mode="edge")
+    h, w = covered.shape
+    out = np.zeros((h, w), bool)
+    for a in (-1, 0, 1):
+        for b in (-1, 0, 1):
+            out |= padded[1 + a : 1 + a + h, 1 + b : 1 + b + w] != covered
+    return out
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -40,16 +76,39 @@ class Explanation:
     closest : dict
         The same for the best render found, explained or not.
     residual_before : float
-        The mean absolute difference of the RGB values, the image against the render as given.
+        The mean absolute difference of the RGB values, the image against the render as given
+        (pixels with a NaN channel left out).
     residual_after : float
         The same against the best render found.
+    residual_interior : float
+        The same away from the best render's silhouettes (a pixel with a neighbour of other
+        coverage), where other renderers antialias: what `explained` is decided on.
+    noise : float
+        What the picture's own rounding allows: half its quantisation step (0.5/255 for an
+        8-bit picture, or a float picture whose values are multiples of 1/255) plus 2e-4 for
+        float arithmetic.
     explained : bool
-        Whether the best render is within 2/255 on average: otherwise no known convention
-        explains the image (`switches` is empty; `closest` is what came closest).
+        Whether the best render is within `noise` away from the silhouettes, and its light and
+        ambient scales inside their searched ranges (not stopped at an end): otherwise nothing
+        explains the image (`switches` is empty; `closest` and `candidates` are what came
+        closest, which is not an explanation).
+    candidates : list of (dict, float)
+        Distinct candidates with their switches and residual: the best render's first, then
+        the closest others the search tried.
+    ignored : int
+        Pixels left out because a channel is NaN.
     image : Image
         The best render.
+    target : Image
+        The picture explained, as float values in [0, 1].
     renders : int
         How many renders the search made.
+
+    Notes
+    -----
+    ``print(explanation)`` says in a sentence what explains the picture, or that nothing
+    does, with the closest candidates; in a notebook it shows that beside the picture and the
+    best render, small.
     """
 
     switches: dict[str, Any]
@@ -57,8 +116,79 @@ class Explanation:
     residual_before: float
     residual_after: float
     explained: bool
-    image: Image
+    image: Image = dataclasses.field(repr=False)
     renders: int
+    residual_interior: float = 0.0
+    noise: float = 0.0
+    candidates: list[tuple[dict[str, Any], float]] = dataclasses.field(
+        default_factory=list, repr=False
+    )
+    ignored: int = 0
+    target: Image | None = dataclasses.field(default=None, repr=False)
+
+    def __str__(self) -> str:
+        shown = _switches_text(self.switches)
+        if self.explained:
+            head = (
+                f"explained by {shown}: the residual goes from {self.residual_before:.3g} to "
+                f"{self.residual_interior:.3g} away from the silhouettes, within the picture's "
+                f"noise {self.noise:.3g}"
+                if self.switches
+                else f"explained as rendered: residual {self.residual_interior:.3g}, within "
+                f"the picture's noise {self.noise:.3g}"
+            )
+            lines = [head]
+        else:
+            lines = [
+                f"nothing explains it: the closest render, {_switches_text(self.closest)}, "
+                f"leaves {self.residual_interior:.3g} away from the silhouettes, above the "
+                f"picture's noise {self.noise:.3g} (from {self.residual_before:.3g} as "
+                "rendered); the picture may come from another shading model, or from "
+                "conventions glshade does not search"
+            ]
+            for switches, residual in self.candidates[1:]:
+                lines.append(f"  also close: {_switches_text(switches)}, residual {residual:.3g}")
+        if self.ignored:
+            lines.append(f"{self.ignored} pixels with NaN left out")
+        lines.append(f"{self.renders} renders")
+        return "\n".join(lines)
+
+    def _repr_html_(self) -> str:
+        """The sentence, the picture and the best render side by side, small."""
+        cells = []
+        for title, img in (("picture", self.target), ("best render", self.image)):
+            if img is None:
+                continue
+            rgb = np.nan_to_num(np.clip(np.asarray(img, np.float64)[..., :3], 0.0, 1.0))
+            data = base64.b64encode(encode_png(rgb)).decode("ascii")
+            width = min(rgb.shape[1], 192)
+            cells.append(
+                f'<figure style="margin:0"><img src="data:image/png;base64,{data}" '
+                f'width="{width}" alt="{title}"><figcaption>{title}</figcaption></figure>'
+            )
+        text = "".join(f"<div>{html.escape(line)}</div>" for line in str(self).splitlines())
+        return (
+            '<div style="font-family:sans-serif;font-size:12px">'
+            f'<div>{text}</div><div style="display:flex;gap:12px">{"".join(cells)}</div></div>'
+        )
+
+
+def _switches_text(switches: dict[str, Any]) -> str:
+    if not switches:
+        return "no switch"
+    return ", ".join(
+        f"{k}={v:.3g}" if isinstance(v, float) else f"{k}={v!r}" for k, v in switches.items()
+    )
+
+
+def _at_an_end(post: dict[str, Any], config: dict[str, Any]) -> bool:
+    """Whether a fitted scale stopped at the end of its searched range: the picture wants a
+    value outside it, which is no convention's."""
+    k = math.log(post["light_scale"])
+    return (
+        min(abs(k - end) for end in SCALE_RANGE) < 1e-3
+        or config["ambient_scale"] >= AMBIENT_RANGE[1] - 1e-9
+    )
 
 
 def explain(
@@ -81,10 +211,17 @@ def explain(
     ``1/π`` convention shows as 3.14 or 0.32); and, as one more move, a scale of the global
     ambient term (0 to 10) fitted with it.
 
+    The picture is explained when the best render matches it to within its own rounding (half
+    its quantisation step, plus 2e-4 for float arithmetic) away from the render's silhouettes,
+    with the fitted scales inside their ranges; otherwise `explain` says nothing explains it,
+    with the closest candidates, rather than naming a convention that only comes near (a
+    picture of another shading model, glTF's metallic-roughness as pyrender draws it, say).
+
     Parameters
     ----------
     image : (height, width, 3) or (height, width, 4) array-like
-        The picture to explain: float in [0, 1] or uint8; its size is the render's.
+        The picture to explain: float in [0, 1], uint8 (divided by 255) or uint16 (by 65535);
+        its size is the render's. Pixels with a NaN channel are left out (and counted).
     mesh : mesh
         As for `render`: an object with ``.vertices`` and ``.faces``, or a ``(vertices,
         faces)`` tuple.
@@ -110,10 +247,13 @@ def explain(
         TypeError) for a scene that is not a `glshade.Scene` (the glTF and three.js models
         have no switches here).
     """
-    target = np.asarray(image)
-    if target.ndim != 3 or target.shape[2] not in (3, 4):
-        raise ValueError(f"image must have shape (height, width, 3 or 4), got {target.shape}")
-    target = target / 255.0 if target.dtype == np.uint8 else target.astype(np.float64)
+    target, step = picture_values(image, "image", "explain")
+    noise = quantisation_step(target[..., :3], step) / 2 + FLOAT_NOISE
+    ignored = int((~np.isfinite(target[..., :3]).all(axis=2)).sum())
+    if ignored == target.shape[0] * target.shape[1]:
+        raise ValueError(
+            f"image has a NaN channel in each of its {ignored} pixels: nothing to explain"
+        )
     height, width = target.shape[:2]
     if scene is not None and not isinstance(scene, Scene):
         raise TypeError(
@@ -162,6 +302,7 @@ def explain(
     before = search.residual(start, clamp0, transfer0)
     config = dict(start)
     score, post, picture = search.fit(config)
+    tried: list[tuple[float, dict[str, Any], dict[str, Any]]] = [(score, post, config)]
     while True:
         trials = []
         for name, values in switches_searched.items():
@@ -177,20 +318,25 @@ def explain(
         ambient_trial = search.fit_ambient(config, post)
         if ambient_trial is not None:
             trials.append(ambient_trial)
+        tried.extend((fit[0], fit[1], candidate) for fit, candidate in trials)
         (new_score, new_post, new_picture), candidate = min(trials, key=lambda t: t[0][0])
         if new_score >= score - MARGIN:
             break
         score, post, picture, config = new_score, new_post, new_picture, candidate
-    switches = {k: config[k] for k in switches_searched if config[k] != start[k]}
-    if post["transfer"] != transfer0:
-        switches["transfer"] = post["transfer"]
-    if post["clamp"] != clamp0:
-        switches["clamp"] = post["clamp"]
-    if abs(post["light_scale"] - 1.0) > 1e-3:
-        switches["light_scale"] = post["light_scale"]
-    if abs(config["ambient_scale"] - 1.0) > 1e-3:
-        switches["ambient_scale"] = config["ambient_scale"]
-    explained = score <= EXPLAINED
+    named = functools.partial(_named, start, switches_searched, transfer0, clamp0)
+    switches = named(config, post)
+    # Decided away from the silhouettes, where another renderer's antialiasing differs.
+    rows = np.asarray(picture)[..., :3].reshape(-1, 3)
+    inside = np.flatnonzero(~silhouette(np.asarray(picture)[..., 3]).reshape(-1))
+    interior = search.mean_difference(rows, np.intersect1d(inside, search.valid))
+    explained = interior <= noise and not _at_an_end(post, config)
+    candidates: list[tuple[dict[str, Any], float]] = [(switches, score)]
+    for residual, fit_post, fit_config in sorted(tried, key=lambda t: t[0]):
+        found = named(fit_config, fit_post)
+        if all(found != c for c, _ in candidates):
+            candidates.append((found, residual))
+        if len(candidates) == CANDIDATES:
+            break
     return Explanation(
         switches=switches if explained else {},
         closest=switches,
@@ -199,4 +345,30 @@ def explain(
         explained=explained,
         image=Image(picture),
         renders=search.renders,
+        residual_interior=interior,
+        noise=noise,
+        candidates=candidates,
+        ignored=ignored,
+        target=Image(target),
     )
+
+
+def _named(
+    start: dict[str, Any],
+    searched: dict[str, Any],
+    transfer0: str,
+    clamp0: bool,
+    config: dict[str, Any],
+    post: dict[str, Any],
+) -> dict[str, Any]:
+    """The switches of `config` and its fitted `post` that differ from the render as meant."""
+    switches = {k: config[k] for k in searched if config[k] != start[k]}
+    if post["transfer"] != transfer0:
+        switches["transfer"] = post["transfer"]
+    if post["clamp"] != clamp0:
+        switches["clamp"] = post["clamp"]
+    if abs(post["light_scale"] - 1.0) > 1e-3:
+        switches["light_scale"] = post["light_scale"]
+    if abs(config["ambient_scale"] - 1.0) > 1e-3:
+        switches["ambient_scale"] = config["ambient_scale"]
+    return switches

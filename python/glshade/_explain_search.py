@@ -174,10 +174,13 @@ class Search:
         self.height, self.width = target.shape[:2]
         self.flat = flat
         self.render_options = render_options
+        # Rows of RGB; pixels with a NaN channel say nothing: every residual and fit leaves
+        # them out (`valid`, the others' row numbers; `sample`, row numbers of valid pixels).
         self.target = target[..., :3].reshape(-1, 3)
-        pixels = self.height * self.width
+        self.valid = np.flatnonzero(np.isfinite(self.target).all(axis=1))
         rng = np.random.default_rng(0)
-        self.sample = rng.choice(pixels, min(PIXELS_FOR_FITS, pixels), replace=False)
+        count = len(self.valid)
+        self.sample = self.valid[rng.choice(count, min(PIXELS_FOR_FITS, count), replace=False)]
         self.renders = 0
         # Renders without light, RGB rows: emission and global ambient (`unlit`), emission
         # alone (`dark`). Only what is drawn (culling, winding) and, with flat shading, the
@@ -233,8 +236,15 @@ class Search:
 
     def residual(self, config: dict[str, Any], clamp: bool, transfer: str) -> float:
         """The full-image residual of `config` as drawn, with `clamp` and `transfer`."""
-        encoded = encoded_rgb(self.rows(config, 1.0), clamp, transfer)
-        return float(np.mean(np.abs(encoded - self.target)))
+        return self.mean_difference(encoded_rgb(self.rows(config, 1.0), clamp, transfer))
+
+    def mean_difference(self, rows: NDArray[Any], where: NDArray[Any] | None = None) -> float:
+        """The mean |difference| of RGB `rows` from the target's over its valid pixels (or
+        the row numbers `where`); 0 where there are none."""
+        where = self.valid if where is None else where
+        if len(where) == 0:
+            return 0.0
+        return float(np.mean(np.abs(rows[where] - self.target[where])))
 
     def fit(self, config: dict[str, Any], post: dict[str, Any] | None = None) -> Fit:
         """The full-image residual of `config` with the transfer, clamp and light scale that fit
@@ -259,7 +269,7 @@ class Search:
             post = best[1]
         linear = lit0 + post["light_scale"] * (lit1 - lit0)
         encoded = encoded_rgb(linear, post["clamp"], post["transfer"])
-        full = float(np.mean(np.abs(encoded - self.target)))
+        full = self.mean_difference(encoded)
         picture = np.concatenate(
             [encoded.reshape(self.height, self.width, 3), one[..., 3:]], axis=-1
         )
