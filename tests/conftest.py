@@ -10,8 +10,16 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, settings
 
-settings.register_profile("dev", max_examples=50)
-settings.register_profile("ci", max_examples=200, suppress_health_check=[HealthCheck.too_slow])
+# Every failure prints the blob that reproduces it (@reproduce_failure); under CI the examples
+# are derived from each test's name, so a run repeats exactly and a failure is the same on rerun.
+settings.register_profile("dev", max_examples=50, print_blob=True)
+settings.register_profile(
+    "ci",
+    max_examples=200,
+    derandomize=True,
+    print_blob=True,
+    suppress_health_check=[HealthCheck.too_slow],
+)
 settings.register_profile("thorough", max_examples=5000)
 settings.load_profile(os.environ.get("HYPOTHESIS_PROFILE", "ci" if os.environ.get("CI") else "dev"))
 

@@ -230,3 +230,70 @@ def test_many_meshes_in_one_frame(renderer: Any) -> None:
     assert lit.sum() > 2000
     error = float(np.abs(ours[..., :3] - theirs)[inside].max())
     assert error <= ROUNDING + FLOAT32, error * 255
+
+
+GREY = (0.1, 0.1, 0.1)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_compare_reads_pyrenders_opaque_background_and_depth(renderer: Any, seed: int) -> None:
+    """pyrender's picture over an opaque background, given to `compare` with that background,
+    is labelled exactly as its transparent picture is (silhouettes are edges, no coverage
+    difference off them), within the 8-bit default tolerance; its depth, eye distances with 0
+    where nothing is drawn, compares with render's window depth once its convention is named,
+    and is refused, naming the convention, when it is not."""
+    scene = scene_of(seed, ["directional", "point"], ambient=(0.05, 0.05, 0.05))
+    rgba, their_depth = renderer.render(scene, flags=pyrender.RenderFlags.RGBA)
+    ours, depth = gs.render(scene, width=WIDTH, height=HEIGHT, depth=True)
+    transparent = gs.compare(ours, rgba)
+    assert transparent.tolerance == pytest.approx(0.5 / 255 + 1e-4, rel=1e-12)
+    scene.bg_color = np.array((*GREY, 1.0))
+    rgb, _ = renderer.render(scene)
+    assert rgb.shape == (HEIGHT, WIDTH, 3) and (rgb[0, 0] == 26).all()
+    opaque_ours = gs.render(scene, width=WIDTH, height=HEIGHT)
+    assert (opaque_ours[..., 3] == 1).all()
+    opaque = gs.compare(opaque_ours, rgb, background=GREY)
+    np.testing.assert_array_equal(opaque.labels, transparent.labels)
+    assert opaque.counts["coverage, edge"] > 100 and opaque.counts["coverage, interior"] == 0
+    unnamed = gs.compare(opaque_ours, rgb)  # the background not given: said what to pass
+    assert any("pass background=(0.1, 0.1, 0.1)" in note for note in unnamed.notes)
+    assert any("pass background=(0.102, 0.102, 0.102)" in note for note in unnamed.notes)
+
+    linear = {"reference_depth_convention": "linear", "near": ZNEAR, "far": ZFAR}
+    result = gs.compare(ours, rgba, depth=depth, reference_depth=their_depth, **linear)
+    assert result.counts["depth, interior"] == 0 and result.counts["coverage, interior"] == 0
+    assert result.counts["color, interior"] <= transparent.counts["color, interior"]
+    # Coverage from depth (pyrender reads one sample of four) is a little less than alpha's.
+    assert result.compared >= 0.9 * transparent.compared > 0.05 * WIDTH * HEIGHT
+    with pytest.raises(ValueError, match="reference_depth_convention='linear' with near="):
+        gs.compare(ours, rgba, depth=depth, reference_depth=their_depth)
+
+
+@pytest.mark.parametrize("seed", SEEDS[:2])
+def test_explain_does_not_take_a_metallic_roughness_picture_for_gl(
+    renderer: Any, seed: int
+) -> None:
+    """pyrender's metallic-roughness picture, given the GL scene of the same lights, camera and
+    colours: GL's switches and scales come near (a gamma, a light scale, an ambient scale), but
+    not to within the 8-bit picture's rounding, so `explain` says nothing explains it."""
+    mat = material(baseColorFactor=(0.8, 0.6, 0.4, 1.0), metallicFactor=0.0, roughnessFactor=0.5)
+    scene = scene_of(seed, ["directional", "point"], mat, ambient=(0.05, 0.05, 0.05))
+    rgb, _ = renderer.render(scene)
+    (_, key_pose), (_, fill_pose) = light("directional"), light("point")
+    gl = gs.Scene(
+        lights=[
+            gs.Light(position=(*key_pose[:3, 2], 0), diffuse=(1, 0.95, 0.9),
+                     specular=(1, 0.95, 0.9)),
+            gs.Light(position=(*fill_pose[:3, 3], 1), diffuse=(0.6, 0.8, 1.0),
+                     specular=(0.6, 0.8, 1.0), quadratic_attenuation=1.0),
+        ],
+        material=gs.Material(diffuse=(0.8, 0.6, 0.4), specular=(0.5, 0.5, 0.5), shininess=20),
+        global_ambient=(0.05, 0.05, 0.05, 1), viewer=(0, 0, 0, 1),
+    )  # fmt: skip
+    projection = pyrender.PerspectiveCamera(yfov=YFOV, znear=ZNEAR, zfar=ZFAR)
+    camera = gs.Camera(np.eye(4), projection.get_projection_matrix(WIDTH, HEIGHT))
+    m = mesh(seed)
+    e = gs.explain(rgb, (m.vertices, m.faces), gl, camera)
+    assert e.residual_after < 0.5 * e.residual_before  # the search came nearer
+    assert not e.explained and e.switches == {}, str(e)
+    assert e.residual_interior > 2 * e.noise and str(e).startswith("nothing explains it")

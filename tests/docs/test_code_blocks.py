@@ -12,6 +12,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from conftest import require
 
 from .pages import PAGES, README, ROOT, markdown_files, notebooks, python_blocks, run_blocks
 
@@ -69,9 +70,7 @@ def test_the_readme_shows_what_its_examples_draw(
 ) -> None:
     """Each picture of the README is the file its examples write, to within one 8-bit level
     (another CPU's instruction set may round a few values the other way)."""
-    image = pytest.importorskip(
-        "PIL.Image", reason="Pillow is not installed (matplotlib brings it)"
-    )
+    image = require("PIL.Image")
     monkeypatch.chdir(tmp_path)
     run_blocks(README)
     pictures = re.findall(r"!\[[^]]*\]\(docs/pages/images/([^)]+\.png)\)", README.read_text())

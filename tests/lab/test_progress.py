@@ -11,6 +11,7 @@ import warnings
 from typing import Any
 
 import pytest
+from conftest import require
 
 from glshade.lab import progress
 from glshade.lab.progress import Progress
@@ -38,8 +39,8 @@ def test_a_kernel_is_told_from_a_terminal_ipython(monkeypatch: pytest.MonkeyPatc
 
 
 def test_widgets_need_tqdm_and_ipywidgets(monkeypatch: pytest.MonkeyPatch) -> None:
-    pytest.importorskip("tqdm")
-    pytest.importorskip("ipywidgets")
+    require("tqdm")
+    require("ipywidgets")
     assert progress.has_widgets()
     monkeypatch.setitem(sys.modules, "ipywidgets", None)
     assert not progress.has_widgets()
@@ -115,7 +116,7 @@ def test_a_notebook_without_widgets_shows_nothing_and_does_not_warn(
 
 
 def test_elsewhere_the_text_bar_counts_on_the_stream(monkeypatch: pytest.MonkeyPatch) -> None:
-    pytest.importorskip("tqdm")
+    require("tqdm")
     monkeypatch.setattr(progress, "in_notebook", lambda: False)
     stream = io.StringIO()
     monkeypatch.setattr(sys, "stderr", stream)

@@ -1,7 +1,8 @@
 """A call whose allocation fails under an address-space limit raises MemoryError. Prints
 "MemoryError <message>", or nothing if the call succeeded.
 
-Usage: python tests/scripts/allocation.py {shade,shade-exact,vertex_normals,face_normals,render}
+Usage: python tests/scripts/allocation.py CASE, one of shade, shade-exact, shade-gltf,
+shade-threejs, vertex_normals, face_normals, crease_normals, render, render-gltf, relief
 """
 
 from __future__ import annotations
@@ -23,15 +24,29 @@ def prepare(case: str) -> Callable[[], object]:
         if case == "shade":
             return lambda: gs.shade(p, p, gs.Scene(lights=[gs.Light()]))
         return lambda: gs.shade(p, p, gs.Scene(lights=[gs.Light()]), accuracy="exact")
-    if case in ("vertex_normals", "face_normals"):
+    if case in ("shade-gltf", "shade-threejs"):
+        p = np.zeros((40_000_000, 3), np.float32)
+        world: gs.gltf.Scene | gs.threejs.Scene = (
+            gs.gltf.Scene(gs.gltf.PointLight())
+            if case == "shade-gltf"
+            else gs.threejs.Scene(gs.threejs.PointLight())
+        )
+        return lambda: gs.shade(p, p, world)
+    if case == "relief":
+        elevation = np.zeros((8000, 8000))
+        return lambda: gs.relief.LightSource().hillshade(elevation)
+    if case in ("vertex_normals", "face_normals", "crease_normals"):
         v = rng.normal(size=(4_000_000, 3))
         f = rng.integers(0, 4_000_000, (8_000_000, 3))
         if case == "vertex_normals":
             return lambda: gs.vertex_normals(v, f)
+        if case == "crease_normals":
+            return lambda: gs.crease_normals(v, f)
         return lambda: gs.face_normals(v, f)
-    if case == "render":
+    if case in ("render", "render-gltf"):
         t = np.array([[-1, -1, 0], [1, -1, 0], [0, 1, 0.0]])
-        return lambda: gs.render(t, [[0, 1, 2]], gs.Scene(), gs.Camera(), width=16384, height=16384)
+        scene = gs.Scene() if case == "render" else gs.gltf.Scene(gs.gltf.PointLight())
+        return lambda: gs.render(t, [[0, 1, 2]], scene, gs.Camera(), width=16384, height=16384)
     raise SystemExit(f"unknown case {case!r}")
 
 

@@ -1,5 +1,5 @@
-"""A fork pool started after the parent shaded, computed normals and rendered: every child's
-results equal the parent's. Prints "ok".
+"""A fork pool started after the parent made every O(n) call (each model's shade and render,
+the normals, relief): every child's results equal the parent's. Prints "ok".
 
 Usage: python tests/scripts/fork_pool.py
 """
@@ -7,6 +7,7 @@ Usage: python tests/scripts/fork_pool.py
 from __future__ import annotations
 
 import multiprocessing as mp
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -16,28 +17,36 @@ import glshade as gs
 rng = np.random.default_rng(1)
 p, n = rng.normal(size=(2, 50_000, 3)).astype(np.float32)
 scene = gs.Scene(lights=[gs.Light(position=(1, 2, 3, 1)), gs.Light()])
+gltf = gs.gltf.Scene(gs.gltf.PointLight(position=(1, 2, 3)), gs.gltf.Material(roughness=0.4))
+threejs = gs.threejs.Scene([gs.threejs.PointLight(position=(1, 2, 3)), gs.threejs.AmbientLight()])
 v = rng.normal(size=(30_000, 3))
 f = rng.integers(0, 30_000, (60_000, 3))
+elevation = rng.normal(size=(300, 400)).cumsum(axis=0)
+
+CALLS: list[Callable[[], Any]] = [
+    lambda: gs.shade(p, n, scene),
+    lambda: gs.shade(p, n, gltf),
+    lambda: gs.shade(p, n, threejs),
+    lambda: gs.vertex_normals(v, f),
+    lambda: gs.face_normals(v, f),
+    lambda: gs.crease_normals(v, f),
+    lambda: gs.render(v, f, scene, gs.Camera(), width=64, height=64),
+    lambda: gs.render(v, f, gltf, gs.Camera(), width=64, height=64),
+    lambda: gs.render(v, f, threejs, gs.Camera(), width=64, height=64),
+    lambda: gs.relief.LightSource().hillshade(elevation),
+]
 
 
-def child(i: int) -> tuple[Any, Any, Any, Any]:
-    return (
-        gs.shade(p, n, scene),
-        gs.vertex_normals(v, f),
-        gs.face_normals(v, f),
-        gs.render(v, f, scene, gs.Camera(), width=64, height=64),
-    )
+def child(i: int) -> list[Any]:
+    return [np.asarray(call()) for call in CALLS]
 
 
 def main() -> None:
-    expected = gs.shade(p, n, scene)
-    normals = gs.vertex_normals(v, f), gs.face_normals(v, f)
-    image = gs.render(v, f, scene, gs.Camera(), width=64, height=64)
+    expected = [np.asarray(call()) for call in CALLS]
     with mp.get_context("fork").Pool(2) as pool:
-        for shaded, vn, fn, im in pool.map(child, range(4)):
-            assert np.array_equal(shaded, expected)
-            assert np.array_equal(vn, normals[0]) and np.array_equal(fn, normals[1])
-            assert np.array_equal(im, image)
+        for results in pool.map(child, range(4)):
+            for got, want in zip(results, expected, strict=True):
+                assert np.array_equal(got, want)
     print("ok")
 
 

@@ -1,7 +1,8 @@
 """SIGINT half a second into a long call: the call stops with KeyboardInterrupt. Prints
 "interrupted <seconds after the signal>" or "finished <seconds>".
 
-Usage: python tests/scripts/interrupt.py {shade,shade-out,vertex_normals,face_normals,render}
+Usage: python tests/scripts/interrupt.py CASE, one of shade, shade-out, shade-gltf, shade-threejs,
+vertex_normals, face_normals, crease_normals, render, render-gltf, render-threejs, relief
 """
 
 from __future__ import annotations
@@ -31,17 +32,42 @@ def prepare(case: str) -> Callable[[], object]:
         out = np.zeros((4_000_000, 4))
         scene = gs.Scene(lights=[spot] * 64, material=shiny)
         return lambda: gs.shade(p, p, scene, out=out)
-    if case in ("vertex_normals", "face_normals"):
+    if case in ("shade-gltf", "shade-threejs"):
+        p = rng.normal(size=(4_000_000, 3))
+        if case == "shade-gltf":
+            world: gs.gltf.Scene | gs.threejs.Scene = gs.gltf.Scene(
+                [gs.gltf.SpotLight(position=(1, 2, 3), direction=(-1, -2, -3))] * 64,
+                gs.gltf.Material(metallic=0.3, roughness=0.4),
+            )
+        else:
+            world = gs.threejs.Scene(
+                [gs.threejs.SpotLight(position=(1, 2, 3), penumbra=0.3)] * 64,
+                gs.threejs.MeshPhongMaterial(shininess=9.5),
+            )
+        return lambda: gs.shade(p, p, world, accuracy="exact")
+    if case == "relief":
+        elevation = rng.normal(size=(6000, 6000)).cumsum(axis=0)
+        light = gs.relief.LightSource()
+        return lambda: [light.hillshade(elevation) for _ in range(20)]
+    if case in ("vertex_normals", "face_normals", "crease_normals"):
         v = rng.normal(size=(4_000_000, 3))
         f = rng.integers(0, 4_000_000, (8_000_000, 3))
         if case == "vertex_normals":
             return lambda: [gs.vertex_normals(v, f) for _ in range(20)]
+        if case == "crease_normals":
+            return lambda: [gs.crease_normals(v, f) for _ in range(20)]
         return lambda: [gs.face_normals(v, f) for _ in range(40)]
-    if case == "render":
+    if case in ("render", "render-gltf", "render-threejs"):
         import trimesh
 
         m = trimesh.creation.icosphere(5)
-        scene = gs.Scene(lights=[spot] * 64, material=shiny)
+        scene: gs.Scene | gs.gltf.Scene | gs.threejs.Scene = gs.Scene(
+            lights=[spot] * 64, material=shiny
+        )
+        if case == "render-gltf":
+            scene = gs.gltf.Scene([gs.gltf.PointLight(position=(1, 2, 3))] * 64)
+        elif case == "render-threejs":
+            scene = gs.threejs.Scene([gs.threejs.PointLight(position=(1, 2, 3))] * 64)
         camera = gs.Camera()
         return lambda: gs.render(m.vertices * 0.8, m.faces, scene, camera, width=4096, height=4096)
     raise SystemExit(f"unknown case {case!r}")

@@ -10,7 +10,9 @@ from support.processes import passes
 
 pytestmark = pytest.mark.subprocess
 
-CALLS = ["shade", "shade-exact", "vertex_normals", "face_normals", "render"]
+# Every O(n) call: each model's shade and render, the normals, relief.
+CALLS = ["shade", "shade-exact", "shade-gltf", "shade-threejs", "vertex_normals", "face_normals",
+         "crease_normals", "render", "render-gltf", "relief"]  # fmt: skip
 
 
 def test_a_fork_pool_after_the_parent_shaded_returns_the_parents_results() -> None:
@@ -72,7 +74,11 @@ def test_faces_changed_by_another_thread_never_panic() -> None:
     assert "ok" in out and "Panic" not in out
 
 
-@pytest.mark.parametrize("case", ["shade", "shade-out", "vertex_normals", "face_normals", "render"])
+@pytest.mark.parametrize(
+    "case",
+    ["shade", "shade-out", "shade-gltf", "shade-threejs", "vertex_normals", "face_normals",
+     "crease_normals", "render", "render-gltf", "render-threejs", "relief"],
+)  # fmt: skip
 def test_ctrl_c_interrupts_a_long_call_within_half_a_second(case: str) -> None:
     out = passes("interrupt", case, timeout=240)
     word, _, seconds = out.strip().partition(" ")

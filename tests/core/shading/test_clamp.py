@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+from conftest import require
 
 import glshade as gs
 from support.gl_reference import gl_lighting
@@ -126,7 +127,7 @@ def test_render_keeps_the_sums_and_the_colour_sum(shading: str, separate_specula
 
 
 def test_dask_passes_clamp_through() -> None:
-    da = pytest.importorskip("dask.array", reason="dask is not installed (pip install '.[dask]')")
+    da = require("dask.array")
     normals = np.tile([0.0, 0.0, 1.0], (1000, 1))
     lazy = gs.shade(da.from_array(np.zeros((1000, 3)), chunks=250), normals, BRIGHT, clamp=False)
     np.testing.assert_array_equal(
