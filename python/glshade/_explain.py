@@ -14,9 +14,19 @@ from typing import Any
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
+from . import gltf, threejs
 from ._camera import Camera
 from ._compare import picture as picture_values
-from ._explain_search import AMBIENT_RANGE, JOINT, MARGIN, PROVOKING, SCALE_RANGE, SWITCHES, Search
+from ._explain_search import (
+    AMBIENT_RANGE,
+    GL_ONLY,
+    JOINT,
+    MARGIN,
+    PROVOKING,
+    SCALE_RANGE,
+    SWITCHES,
+    Search,
+)  # fmt: skip
 from ._image import Image
 from ._intake import one_of
 from ._png import encode_png
@@ -28,6 +38,8 @@ __all__ = ["Explanation", "explain"]
 # What two float renderers of one convention differ by on average, away from silhouettes
 # (float32 arithmetic, another rasteriser's sample positions inside a face).
 FLOAT_NOISE = 2e-4
+# Undoing a switch after the search is kept where it costs at most this (mean |difference|).
+UNDO = 1e-6
 # How many of the closest candidates an explanation keeps.
 CANDIDATES = 3
 
@@ -194,7 +206,7 @@ def _at_an_end(post: dict[str, Any], config: dict[str, Any]) -> bool:
 def explain(
     image: ArrayLike,
     mesh: Any,
-    scene: Scene | None = None,
+    scene: Scene | gltf.Scene | threejs.Scene | None = None,
     camera: Camera | None = None,
     **render_options: Any,
 ) -> Explanation:
@@ -225,8 +237,12 @@ def explain(
     mesh : mesh
         As for `render`: an object with ``.vertices`` and ``.faces``, or a ``(vertices,
         faces)`` tuple.
-    scene : Scene, optional
-        The scene the picture was meant to show (GL's model); None: `render`'s default scene.
+    scene : Scene, gltf.Scene or threejs.Scene, optional
+        The scene the picture was meant to show; None: `render`'s default scene. For a glTF
+        or three.js scene the switches of GL's equation (``specular``, ``specular_gate``,
+        ``shininess_scale``, ``lights_in``) are not searched: the light scale multiplies the
+        direct lights' intensities, the ambient scale the model's ambient term (glTF's
+        ambient light, three.js' ambient and hemisphere lights).
     camera : Camera, optional
         As for `render`.
     **render_options
@@ -255,11 +271,11 @@ def explain(
             f"image has a NaN channel in each of its {ignored} pixels: nothing to explain"
         )
     height, width = target.shape[:2]
-    if scene is not None and not isinstance(scene, Scene):
+    if scene is not None and not isinstance(scene, (Scene, gltf.Scene, threejs.Scene)):
         raise TypeError(
-            f"scene must be a glshade.Scene or None: explain searches the switches of GL's "
-            f"equation (a glTF or three.js model has conventions of its own), got {type(scene)!r}"
+            f"scene must be a glshade.Scene, gltf.Scene, threejs.Scene or None, got {type(scene)!r}"
         )
+    base: Scene | gltf.Scene | threejs.Scene
     if scene is None:
         from ._framing import default_scene
 
@@ -275,15 +291,19 @@ def explain(
     )  # fmt: skip
     flat = str(render_options.get("shading", "phong")).lower() == "flat"
     switches_searched = dict(SWITCHES)
+    gl_model = isinstance(base, Scene)
+    if not gl_model:
+        for name in GL_ONLY:
+            del switches_searched[name]
     if flat:  # flat shading lights with the face normals: the vertex normals do not matter
         del switches_searched["normals"]
         switches_searched["provoking_vertex"] = PROVOKING
     start: dict[str, Any] = {
-        "specular": base.specular,
-        "specular_gate": base.specular_gate,
+        "specular": base.specular if isinstance(base, Scene) else "blinn",
+        "specular_gate": base.specular_gate if isinstance(base, Scene) else True,
         "lights_in": lights_in0,
         "normals": "angle",
-        "cull": render_options.pop("cull", None),
+        "cull": _cull(render_options.pop("cull", None), base),
         "winding": "ccw",
         "shininess_scale": 1.0,
         "provoking_vertex": one_of(
@@ -323,6 +343,20 @@ def explain(
         if new_score >= score - MARGIN:
             break
         score, post, picture, config = new_score, new_post, new_picture, candidate
+    # A switch taken early can be one the later ones make needless, yet undoing it gains less
+    # than MARGIN: each is undone (the scales refitted) where that is no worse.
+    for name in switches_searched:
+        if config[name] == start[name]:
+            continue
+        candidate = {**config, name: start[name]}
+        undone = [(search.fit(candidate), candidate)]
+        ambient_trial = search.fit_ambient(candidate, undone[0][0][1])
+        if ambient_trial is not None:
+            undone.append(ambient_trial)
+        tried.extend((fit[0], fit[1], c) for fit, c in undone)
+        (new_score, new_post, new_picture), candidate = min(undone, key=lambda t: t[0][0])
+        if new_score <= score + UNDO:
+            score, post, picture, config = new_score, new_post, new_picture, candidate
     named = functools.partial(_named, start, switches_searched, transfer0, clamp0)
     switches = named(config, post)
     # Decided away from the silhouettes, where another renderer's antialiasing differs.
@@ -351,6 +385,14 @@ def explain(
         ignored=ignored,
         target=Image(target),
     )
+
+
+def _cull(given: Any, scene: Any) -> str | None:
+    """The culling the render as meant does, as the search names it (None: no culling): as
+    `render` reads `cull`, None being the scene's default (three.js': by its material's
+    side)."""
+    cull = scene._default_cull() if given is None else given
+    return None if cull in (None, "none") else str(cull).lower()
 
 
 def _named(

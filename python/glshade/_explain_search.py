@@ -1,8 +1,11 @@
 """The search behind `explain`: one render per candidate set of convention switches, and the
-transfer, clamp, light and ambient scales fitted to each on sampled pixels."""
+transfer, clamp, light and ambient scales fitted to each on sampled pixels. The scene is GL's,
+glTF's or three.js'; the world models have no specular model, gate or shininess switch (those
+are GL's equation's), and their lights are in the world whatever the camera does."""
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 import math
 from typing import Any, cast
@@ -10,7 +13,7 @@ from typing import Any, cast
 import numpy as np
 from numpy.typing import NDArray
 
-from . import _glshade
+from . import _glshade, gltf, threejs
 from ._camera import Camera
 from ._intake import colors_checked, real
 from ._normals import crease_normals, vertex_normals
@@ -32,6 +35,9 @@ SWITCHES: dict[str, tuple[Any, ...]] = {
     # Blinn against Phong exponents (4 and 1/4), 0-1 against 0-128 (128 and 1/128).
     "shininess_scale": (1.0, 1 / 128, 0.128, 0.25, 4.0, 7.8125, 128.0),
 }
+# GL's equation's own switches: a glTF or three.js scene has none of them, nor lights that move
+# with the eye.
+GL_ONLY = ("specular", "specular_gate", "shininess_scale", "lights_in")
 # Searched with flat shading only.
 PROVOKING = ("last", "first", "centroid")
 # Switches also tried together: clockwise faces culled as back faces are the counter-clockwise
@@ -63,17 +69,45 @@ def _shinier(material: Material, factor: float) -> Material:
     )
 
 
+AnyScene = Scene | gltf.Scene | threejs.Scene
+# three.js' lights that make its ambient term (the global ambient's counterpart).
+_THREE_AMBIENT = (threejs.AmbientLight, threejs.HemisphereLight)
+
+
+def world_scene_with(
+    scene: gltf.Scene | threejs.Scene, scale: float, ambient: float
+) -> gltf.Scene | threejs.Scene:
+    """A glTF or three.js scene with every direct light's intensity times `scale`, and its
+    ambient term (glTF's ambient light, three.js' ambient and hemisphere lights) times
+    `ambient`: both models are linear in them, as GL's is in its light colours."""
+    fields = scene._fields()
+    fields["lights"] = [
+        dataclasses.replace(
+            light,
+            intensity=light.intensity * (ambient if isinstance(light, _THREE_AMBIENT) else scale),
+        )
+        for light in scene.lights
+    ]
+    if isinstance(scene, gltf.Scene):
+        fields["ambient_light"] = tuple(ambient * x for x in fields["ambient_light"])
+    with colors_checked():
+        return type(scene)(**fields)
+
+
 def scene_with(
-    scene: Scene,
+    scene: AnyScene,
     scale: float,
     specular: str,
     gate: bool,
     *,
     shininess: float = 1.0,
     ambient: float = 1.0,
-) -> Scene:
+) -> AnyScene:
     """`scene` with every light's colours times `scale`, the specular model and gate, the
-    materials' shininess times `shininess` and the global ambient's RGB times `ambient`."""
+    materials' shininess times `shininess` and the global ambient's RGB times `ambient`; a
+    world model's by `world_scene_with` (it has no specular model, gate or shininess)."""
+    if not isinstance(scene, Scene):
+        return world_scene_with(scene, scale, ambient)
     lights = scene.lights
     columns: dict[str, Any] = {n: lights._column(n) for n in _glshade.Lights.PARAMETERS}
     count = len(lights)
@@ -164,7 +198,7 @@ class Search:
         self,
         vertices: NDArray[Any],
         faces: NDArray[Any],
-        scene: Scene,
+        scene: AnyScene,
         camera: Camera,
         target: NDArray[Any],
         flat: bool,
@@ -213,7 +247,9 @@ class Search:
         extra = {"provoking_vertex": config["provoking_vertex"]} if self.flat else {}
         return np.asarray(render(
             self.v, self.faces(config), lit, self.camera, width=self.width, height=self.height,
-            normals=None if self.flat else self.normals(config), cull=config["cull"],
+            normals=None if self.flat else self.normals(config),
+            # "none", render's own name for no culling: None would be a scene's default.
+            cull=cast(Any, "none" if config["cull"] is None else config["cull"]),
             lights_in=config["lights_in"], transfer="linear", clamp=False, **extra,
             **self.render_options,
         ))  # fmt: skip

@@ -172,8 +172,8 @@ def test_uint8_images_and_bad_shapes() -> None:
     assert e.switches == {"transfer": "srgb"} and e.residual_after < 1 / 255
     with pytest.raises(ValueError, match="image must have shape"):
         gs.explain(np.zeros((4, 4)), (V, F), SCENE, CAMERA)
-    with pytest.raises(TypeError, match=r"scene must be a glshade.Scene or None: explain"):
-        gs.explain(np.zeros((4, 4, 4)), (V, F), gs.threejs.Scene(), CAMERA)
+    with pytest.raises(TypeError, match=r"scene must be a glshade.Scene, gltf.Scene, threejs"):
+        gs.explain(np.zeros((4, 4, 4)), (V, F), "scene", CAMERA)  # type: ignore[arg-type]
 
 
 def test_the_picture_s_own_rounding_decides() -> None:
@@ -214,3 +214,66 @@ def test_an_explanation_shows_itself_small() -> None:
     assert len(repr(e)) < 600  # no picture in it
     html = e._repr_html_()
     assert html.count("<img ") == 2 and 'width="192"' in html and "best render" in html
+
+
+# The world models' scenes, meant: lights in the world, an ambient term, a specular lobe.
+WORLD = {
+    "gltf": gs.gltf.Scene(
+        [gs.gltf.DirectionalLight(color=(1, 0.95, 0.9), intensity=2.5, direction=(-1, -1, -2)),
+         gs.gltf.PointLight(color=(0.6, 0.8, 1.0), intensity=9.0, position=(-2, 1, 1))],
+        gs.gltf.Material(base_color=(0.7, 0.6, 0.5, 1), metallic=0.2, roughness=0.45),
+        ambient_light=(0.08, 0.08, 0.1),
+    ),
+    "threejs": gs.threejs.Scene(
+        [gs.threejs.DirectionalLight(intensity=2.0, position=(1, 1, 2)),
+         gs.threejs.PointLight(color=(0.6, 0.5, 0.4), intensity=6.0, position=(-2, 1, 1)),
+         gs.threejs.AmbientLight(intensity=0.3)],
+        gs.threejs.MeshPhongMaterial(color=(0.7, 0.6, 0.5), shininess=20),  # back faces culled
+    ),
+}  # fmt: skip
+WORLD_CASES: list[dict[str, Any]] = [
+    {"transfer": "gamma2.2"}, {"transfer": "srgb", "light_scale": 2.31}, {"light_scale": 0.61},
+    {"normals": "area"}, {"winding": "cw"}, {"ambient_scale": 0.0}, {"cull": "front"},
+]  # fmt: skip
+
+
+def world_planted(model: str, switches: dict[str, Any]) -> np.ndarray:
+    """The world scene's picture with `switches`, made by hand: each direct light's intensity
+    times the light scale and the ambient term times the ambient scale, rebuilt from the
+    records' public fields; the faces, normals and culling given to one `render` call."""
+    scene = WORLD[model]
+    k, a = switches.get("light_scale", 1.0), switches.get("ambient_scale", 1.0)
+    lights = []
+    for light in scene.lights:
+        fields = {f: getattr(light, f) for f in light.__dataclass_fields__}
+        fields["intensity"] *= a if isinstance(light, gs.threejs.AmbientLight) else k
+        lights.append(type(light)(**fields))
+    if model == "gltf":
+        ambient = tuple(a * x for x in WORLD["gltf"].ambient_light)
+        changed_scene: Any = gs.gltf.Scene(lights, scene.material, ambient_light=ambient)
+    else:
+        changed_scene = gs.threejs.Scene(lights, scene.material)
+    faces = F[:, ::-1].copy() if switches.get("winding") == "cw" else F
+    normals = gs.vertex_normals(V, faces, switches.get("normals", "angle"))
+    return np.asarray(gs.render(
+        V, faces, changed_scene, CAMERA, width=SIZE, height=SIZE, normals=normals,
+        cull=switches.get("cull"), transfer=switches.get("transfer", "linear"),
+    ))  # fmt: skip
+
+
+@pytest.mark.parametrize("model", list(WORLD))
+def test_a_world_model_s_scene_is_searched_by_its_own_switches(model: str) -> None:
+    """glTF's and three.js' scenes are searched without GL's equation's switches (specular
+    model, gate, shininess, lights in the eye): the scales multiply their lights'
+    intensities and their ambient terms."""
+    hits = []
+    for case in WORLD_CASES:
+        image = world_planted(model, case)
+        assert np.abs(image - world_planted(model, {})).mean() > 1e-3, f"{case} is not observable"
+        e = gs.explain(image, (V, F), WORLD[model], CAMERA)
+        assert e.explained and e.residual_after <= 1e-5, (model, case, str(e))
+        hits.append(named(e.switches, case))
+    assert all(hits), [c for c, h in zip(WORLD_CASES, hits, strict=True) if not h]
+    e = gs.explain(world_planted(model, {}), (V, F), WORLD[model], CAMERA)
+    assert e.explained and e.switches == {}
+    assert not set(e.closest) & {"specular", "specular_gate", "shininess_scale", "lights_in"}
