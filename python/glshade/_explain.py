@@ -28,7 +28,7 @@ from ._explain_search import (
     Search,
 )  # fmt: skip
 from ._image import Image
-from ._intake import one_of
+from ._intake import colors_checked, one_of
 from ._png import encode_png
 from ._render_input import render_input
 from ._scene import Scene
@@ -371,19 +371,21 @@ def explain(
             candidates.append((found, residual))
         if len(candidates) == CANDIDATES:
             break
+    with colors_checked():  # the picture was checked as `image`; the render is glshade's
+        best, given_picture = Image(picture), Image(target)
     return Explanation(
         switches=switches if explained else {},
         closest=switches,
         residual_before=before,
         residual_after=score,
         explained=explained,
-        image=Image(picture),
+        image=best,
         renders=search.renders,
         residual_interior=interior,
         noise=noise,
         candidates=candidates,
         ignored=ignored,
-        target=Image(target),
+        target=given_picture,
     )
 
 
