@@ -10,6 +10,7 @@ EXPLAIN_EVERY rounds; 600 rounds by default)
 
 from __future__ import annotations
 
+import importlib
 import os
 import sys
 import warnings
@@ -29,9 +30,9 @@ EXPLAIN_EVERY = 10
 def _pyrender_scene() -> Any:
     """A pyrender scene of one mesh, a light and a camera, or None without pyrender."""
     os.environ.setdefault("PYOPENGL_PLATFORM", "egl")  # headless, as the tests' glpeers
-    try:
-        import pyrender
-        import trimesh
+    try:  # by name: pyrender ships no types
+        pyrender: Any = importlib.import_module("pyrender")
+        trimesh: Any = importlib.import_module("trimesh")
     except Exception:  # pyrender's import can fail in many ways without GL
         return None
     scene = pyrender.Scene(bg_color=(0.1, 0.1, 0.1, 1.0))
@@ -84,7 +85,7 @@ def main(rounds: int) -> None:
     pyrender_scene = _pyrender_scene()
     colours: list[Any] = [
         *arrays[:12], (1, 0.5, 0), (200, 80, 40), 0xFF8800, "#ff8800", "#f80", "red", -5,
-        2**40, np.uint8([255, 128, 0]), (1, 0.5, 0, 1), np.nan, 1.5,
+        2**40, np.array([255, 128, 0], np.uint8), (1, 0.5, 0, 1), np.nan, 1.5,
     ]  # fmt: skip
     numbers: list[Any] = [0, 1, -1, 0.5, 2.5, 1e300, -1e300, np.nan, np.inf, "1", None, True, 90]
     pictures: list[Any] = [
@@ -96,8 +97,8 @@ def main(rounds: int) -> None:
     ]  # fmt: skip
     grids: list[Any] = [
         rng.normal(size=(6, 7)), np.zeros((1, 7)), np.full((6, 7), np.nan), np.zeros((6, 7, 3)),
-        np.ma.masked_array(np.zeros((4, 4)), mask=np.eye(4)), rng.integers(0, 9, (5, 5)),
-        "grid", np.zeros((0, 0)),
+        np.ma.masked_array(np.zeros((4, 4)), mask=np.eye(4, dtype=bool)),
+        rng.integers(0, 9, (5, 5)), "grid", np.zeros((0, 0)),
     ]  # fmt: skip
     counts: dict[str, int] = {}
 

@@ -61,15 +61,15 @@ def prepare(case: str) -> Callable[[], object]:
         import trimesh
 
         m = trimesh.creation.icosphere(5)
-        scene: gs.Scene | gs.gltf.Scene | gs.threejs.Scene = gs.Scene(
+        lit: gs.Scene | gs.gltf.Scene | gs.threejs.Scene = gs.Scene(
             lights=[spot] * 64, material=shiny
         )
         if case == "render-gltf":
-            scene = gs.gltf.Scene([gs.gltf.PointLight(position=(1, 2, 3))] * 64)
+            lit = gs.gltf.Scene([gs.gltf.PointLight(position=(1, 2, 3))] * 64)
         elif case == "render-threejs":
-            scene = gs.threejs.Scene([gs.threejs.PointLight(position=(1, 2, 3))] * 64)
+            lit = gs.threejs.Scene([gs.threejs.PointLight(position=(1, 2, 3))] * 64)
         camera = gs.Camera()
-        return lambda: gs.render(m.vertices * 0.8, m.faces, scene, camera, width=4096, height=4096)
+        return lambda: gs.render(m.vertices * 0.8, m.faces, lit, camera, width=4096, height=4096)
     raise SystemExit(f"unknown case {case!r}")
 
 
