@@ -608,7 +608,8 @@ def compare(
         The colour an opaque image is cleared to (pyrender's ``bg_color``, a framebuffer's
         clear colour): in an image without transparent pixels and without a depth, the pixels
         of this colour (within the tolerance, RGB) are not covered, so its silhouettes are
-        edges and coverage differences. uint8 is divided by 255.
+        edges and coverage differences. uint8 is divided by 255 (and then matches within the
+        tolerance plus half an 8-bit step).
     depth_tolerance : float
         The depth difference that counts where the depth is flat; it grows with the depth's
         slope (see `depth_shift`).
@@ -714,8 +715,10 @@ def compare(
             notes.append(f"{name}: eye distances, as window depths with near {clip[0]:g}, far "
                          f"{'inf' if clip[1] is None else f'{clip[1]:g}'}")  # fmt: skip
     clear = None if background is None else _background(background)
-    ca, how_a = _covered(a, da, clear, tol)
-    cr, how_r = _covered(r, dr, clear, tol)
+    # A background in bytes is known to half a step: a float picture's clear colour is within.
+    within = tol + (0.5 / 255 if np.asarray(background).dtype == np.uint8 else 0.0)
+    ca, how_a = _covered(a, da, clear, within)
+    cr, how_r = _covered(r, dr, clear, within)
     a, r = a[..., :channels], r[..., :channels]
     for name, how, img in (("image", how_a, a), ("reference", how_r, r)):
         border = _border_colour(img, tol) if how == "everywhere" else None

@@ -82,6 +82,9 @@ def test_an_opaque_background_given_makes_its_silhouettes_edges() -> None:
     result = gs.compare(*eight, background=np.array([26, 26, 26], np.uint8))
     np.testing.assert_array_equal(result.labels, as_alpha.labels)
     assert "image: covered where its colour is not the background" in result.notes
+    # Float pictures cleared to 0.1, the background given in bytes (26, 0.00196 away).
+    result = gs.compare(both, opaque, background=np.array([26, 26, 26], np.uint8))
+    np.testing.assert_array_equal(result.labels, as_alpha.labels)
 
 
 def test_rgb_against_rgba_compares_rgb() -> None:
