@@ -90,7 +90,8 @@ class Comparison(ValueRecord):
         Per channel error at each requested percentile.
     within_tolerance : float
         The share of compared pixels whose every channel is within `tolerance` (1.0 when
-        nothing is compared).
+        nothing is compared). A pixel NaN in either picture is a colour difference beyond any
+        tolerance, and is left out of `max_error`, `mean_error` and `percentiles`.
     labels : (height, width) uint8
         Each pixel's kind, an index into `KINDS`: "same"; "color" (both cover, colours differ
         beyond the tolerance); "depth" (both cover, depths differ beyond `compare`'s
@@ -737,7 +738,15 @@ def compare(
     edge = _dilate(silhouette, edge_width) if edge_width else silhouette
     both = ca & cr
     error = np.abs(a - r)
-    worst = error.max(axis=2)
+    # A NaN in either picture is a difference of its own: beyond every tolerance (the scale's
+    # dark end), and out of the error statistics, which stay finite.
+    nan = np.isnan(error).any(axis=2)
+    worst = np.where(nan, np.inf, error.max(axis=2))
+    if (nan & both).any():
+        notes.append(
+            f"{int((nan & both).sum())} pixels both cover are NaN in a picture: colour "
+            "differences, left out of the error statistics"
+        )
     labels = np.zeros(shape, np.uint8)
     labels[both & (worst > tol)] = 1
     if da is not None and dr is not None:
@@ -747,7 +756,7 @@ def compare(
     labels[(labels > 0) & edge] += 1
     counts = {kind: int(np.count_nonzero(labels == k)) for k, kind in enumerate(KINDS) if k}
 
-    compared = error[both]
+    compared = error[both & ~nan]
     empty = np.zeros(channels)
     stats = {p: np.percentile(compared, p, axis=0) if len(compared) else empty for p in percentiles}
     within = float((worst[both] <= tol).mean()) if both.any() else 1.0

@@ -168,3 +168,15 @@ def test_a_bad_background_names_itself() -> None:
         gs.compare(rgba, rgba, background=(np.nan, 0, 0))
     with pytest.raises(TypeError, match="background takes numbers, not a colour name"):
         gs.compare(rgba, rgba, background="black")  # type: ignore[arg-type]
+
+
+def test_a_nan_pixel_is_a_difference_and_stays_out_of_the_statistics() -> None:
+    rgba, _ = _picture()
+    broken = rgba.copy()
+    broken[20, 25, 1] = np.nan  # inside the disc
+    result = gs.compare(broken, rgba)
+    assert result.counts["color, interior"] == 1 and result.within_tolerance < 1.0
+    assert np.isfinite(result.max_error).all() and result.max_error.max() == 0.0
+    assert result.largest[0]["row"] == 20 and result.largest[0]["error"] == np.inf
+    assert "1 pixels both cover are NaN in a picture" in result.notes[0]
+    np.testing.assert_allclose(result.heatmap[20, 25, :3], (0.7, 0.0, 0.0), atol=1e-7)
