@@ -19,7 +19,7 @@ from ._typing import Float64Array
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["Comparison", "compare", "picture"]
+__all__ = ["Comparison", "compare", "coverage_edges", "picture"]
 
 Alpha = Literal["straight", "premultiplied"]
 DepthConvention = Literal["window", "linear"]
@@ -484,8 +484,8 @@ def _covered(
     return np.ones(shape, bool), "everywhere"
 
 
-def _neighbours_differ(mask: NDArray[Any]) -> NDArray[np.bool_]:
-    """Pixels with an 8-neighbour of another coverage."""
+def coverage_edges(mask: NDArray[Any]) -> NDArray[np.bool_]:
+    """Pixels of the coverage `mask` with an 8-neighbour of another coverage: silhouettes."""
     h, w = mask.shape
     padded = np.pad(mask, 1, mode="edge")
     out = np.zeros((h, w), bool)
@@ -731,7 +731,7 @@ def compare(
             )
         if how == "background":
             notes.append(f"{name}: covered where its colour is not the background")
-    silhouette = _neighbours_differ(ca) | _neighbours_differ(cr)
+    silhouette = coverage_edges(ca) | coverage_edges(cr)
     for d, c in ((da, ca), (dr, cr)):
         if d is not None:
             silhouette |= _depth_steps(d, c, jump)

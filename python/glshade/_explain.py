@@ -16,6 +16,7 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import gltf, threejs
 from ._camera import Camera
+from ._compare import coverage_edges
 from ._compare import picture as picture_values
 from ._explain_search import (
     AMBIENT_RANGE,
@@ -56,19 +57,6 @@ def quantisation_step(values: NDArray[Any], step: float) -> float:
         if finite.size and np.abs(scaled - np.round(scaled)).max() < 1e-3:
             return 1.0 / levels
     return 0.0
-
-
-def silhouette(alpha: NDArray[Any]) -> NDArray[np.bool_]:
-    """Pixels of a render's coverage (alpha > 0) with an 8-neighbour of the other coverage:
-    where other renderers antialias or sample differently."""
-    covered = alpha > 0
-    padded = np.pad(covered, 1, mode="edge")
-    h, w = covered.shape
-    out = np.zeros((h, w), bool)
-    for a in (-1, 0, 1):
-        for b in (-1, 0, 1):
-            out |= padded[1 + a : 1 + a + h, 1 + b : 1 + b + w] != covered
-    return out
 
 
 @dataclasses.dataclass(frozen=True, eq=False)
@@ -361,7 +349,7 @@ def explain(
     switches = named(config, post)
     # Decided away from the silhouettes, where another renderer's antialiasing differs.
     rows = np.asarray(picture)[..., :3].reshape(-1, 3)
-    inside = np.flatnonzero(~silhouette(np.asarray(picture)[..., 3]).reshape(-1))
+    inside = np.flatnonzero(~coverage_edges(np.asarray(picture)[..., 3] > 0).reshape(-1))
     interior = search.mean_difference(rows, np.intersect1d(inside, search.valid))
     explained = interior <= noise and not _at_an_end(post, config)
     candidates: list[tuple[dict[str, Any], float]] = [(switches, score)]
