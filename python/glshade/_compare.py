@@ -495,7 +495,9 @@ def coverage_edges(mask: NDArray[Any]) -> NDArray[np.bool_]:
     return out
 
 
-def _depth_steps(depth: Float64Array, covered: NDArray[np.bool_], jump: float) -> NDArray[np.bool_]:
+def depth_steps(depth: Float64Array, covered: NDArray[np.bool_], jump: float) -> NDArray[np.bool_]:
+    """Covered pixels with a covered 8-neighbour whose depth differs by more than `jump`:
+    inner silhouettes, where one surface passes in front of another."""
     h, w = depth.shape
     d = np.pad(np.where(covered, depth, np.nan), 1, mode="edge")
     out = np.zeros((h, w), bool)
@@ -734,7 +736,7 @@ def compare(
     silhouette = coverage_edges(ca) | coverage_edges(cr)
     for d, c in ((da, ca), (dr, cr)):
         if d is not None:
-            silhouette |= _depth_steps(d, c, jump)
+            silhouette |= depth_steps(d, c, jump)
     edge = _dilate(silhouette, edge_width) if edge_width else silhouette
     both = ca & cr
     error = np.abs(a - r)

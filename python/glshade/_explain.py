@@ -16,10 +16,11 @@ from numpy.typing import ArrayLike, NDArray
 
 from . import gltf, threejs
 from ._camera import Camera
-from ._compare import coverage_edges
+from ._compare import coverage_edges, depth_steps
 from ._compare import picture as picture_values
 from ._explain_search import (
     AMBIENT_RANGE,
+    FIXED,
     GL_ONLY,
     JOINT,
     MARGIN,
@@ -30,6 +31,7 @@ from ._explain_search import (
 )  # fmt: skip
 from ._image import Image
 from ._intake import colors_checked, one_of
+from ._model_conversion import MODELS, model_of
 from ._png import encode_png
 from ._render_input import render_input
 from ._scene import Scene
@@ -41,6 +43,9 @@ __all__ = ["Explanation", "explain"]
 FLOAT_NOISE = 2e-4
 # Undoing a switch after the search is kept where it costs at most this (mean |difference|).
 UNDO = 1e-6
+# A step in distance between neighbouring pixels, relative, that makes an inner silhouette
+# (a surface in front of another); smooth surfaces step by less unless seen edge on.
+DEPTH_STEP = 0.02
 # How many of the closest candidates an explanation keeps.
 CANDIDATES = 3
 
@@ -67,7 +72,10 @@ class Explanation:
     ----------
     switches : dict
         The switches that explain the image, by name, where they differ from the render as
-        given: ``specular``, ``specular_gate``, ``lights_in``, ``normals`` (``"angle"``,
+        given: ``shading_model`` (``"gl"``, ``"gltf"``, ``"threejs"`` or ``"pytorch3d"``: the
+        scene converted to that model, as the guide page "Why does my renderer look
+        different?" tabulates), ``specular``, ``specular_gate``, ``lights_in`` (these three
+        and ``shininess_scale`` are GL's equation's own), ``normals`` (``"angle"``,
         ``"area"``, ``"uniform"``, or ``"crease"`` at 30 degrees), ``cull``, ``winding``
         (``"cw"``: the faces' vertices in the other order), ``shininess_scale``,
         ``provoking_vertex`` (flat shading), ``transfer`` and ``clamp``; ``light_scale``, the
@@ -81,8 +89,9 @@ class Explanation:
     residual_after : float
         The same against the best render found.
     residual_interior : float
-        The same away from the best render's silhouettes (a pixel with a neighbour of other
-        coverage), where other renderers antialias: what `explained` is decided on.
+        The same away from the best render's silhouettes, where other renderers antialias: a
+        pixel with a neighbour of other coverage, or one more than 2% nearer or farther from
+        the eye (a surface in front of another). What `explained` is decided on.
     noise : float
         What the picture's own rounding allows: half its quantisation step (0.5/255 for an
         8-bit picture, or a float picture whose values are multiples of 1/255) plus 2e-4 for
@@ -143,8 +152,8 @@ class Explanation:
                 f"nothing explains it: the closest render, {_switches_text(self.closest)}, "
                 f"leaves {self.residual_interior:.3g} away from the silhouettes, above the "
                 f"picture's noise {self.noise:.3g} (from {self.residual_before:.3g} as "
-                "rendered); the picture may come from another shading model, or from "
-                "conventions glshade does not search"
+                "rendered); the picture may come from conventions glshade does not search, "
+                "or from another scene"
             ]
             for switches, residual in self.candidates[1:]:
                 lines.append(f"  also close: {_switches_text(switches)}, residual {residual:.3g}")
@@ -202,7 +211,9 @@ def explain(
 
     The render of `mesh` with `scene`, `camera` and `render_options` (as `render` takes them)
     is compared with `image`; then the switches other renderers differ by are searched, one at
-    a time, keeping the change that lowers the residual most, until none helps: the output
+    a time, keeping the change that lowers the residual most, until none helps: the shading
+    model (GL's, glTF's metallic-roughness as pyrender draws it, three.js' Phong, PyTorch3D's
+    Phong, the scene converted to each), the output
     transfer (linear, sRGB, gamma 2.2) and GL's clamp, Blinn or Phong, the specular gate,
     lights in eye or world coordinates, the normals' weighting (angle, area, uniform) or
     creases at 30 degrees, culling (none, back, front), the faces' winding, shininess scales
@@ -214,8 +225,7 @@ def explain(
     The picture is explained when the best render matches it to within its own rounding (half
     its quantisation step, plus 2e-4 for float arithmetic) away from the render's silhouettes,
     with the fitted scales inside their ranges; otherwise `explain` says nothing explains it,
-    with the closest candidates, rather than naming a convention that only comes near (a
-    picture of another shading model, glTF's metallic-roughness as pyrender draws it, say).
+    with the closest candidates, rather than naming a convention that only comes near.
 
     Parameters
     ----------
@@ -226,11 +236,11 @@ def explain(
         As for `render`: an object with ``.vertices`` and ``.faces``, or a ``(vertices,
         faces)`` tuple.
     scene : Scene, gltf.Scene or threejs.Scene, optional
-        The scene the picture was meant to show; None: `render`'s default scene. For a glTF
-        or three.js scene the switches of GL's equation (``specular``, ``specular_gate``,
-        ``shininess_scale``, ``lights_in``) are not searched: the light scale multiplies the
-        direct lights' intensities, the ambient scale the model's ambient term (glTF's
-        ambient light, three.js' ambient and hemisphere lights).
+        The scene the picture was meant to show; None: `render`'s default scene. The switches
+        of GL's equation (``specular``, ``specular_gate``, ``shininess_scale``, ``lights_in``)
+        are searched only while the search draws GL's model; in glTF's and three.js' the
+        light scale multiplies the direct lights' intensities, the ambient scale the model's
+        ambient term (glTF's ambient light, three.js' ambient and hemisphere lights).
     camera : Camera, optional
         As for `render`.
     **render_options
@@ -248,8 +258,7 @@ def explain(
     ------
     ValueError, TypeError
         As `render` raises them, for an image that is not (height, width, 3 or 4), or (a
-        TypeError) for a scene that is not a `glshade.Scene` (the glTF and three.js models
-        have no switches here).
+        TypeError) for a scene of none of glshade's models.
     """
     target, step = picture_values(image, "image", "explain")
     noise = quantisation_step(target[..., :3], step) / 2 + FLOAT_NOISE
@@ -270,23 +279,19 @@ def explain(
         # render's default scene: its lights belong to the world.
         base, lights_in0 = default_scene(), "world"
         render_options.pop("lights_in", None)
-    else:
+    elif isinstance(scene, Scene):
         base, lights_in0 = scene, render_options.pop("lights_in", "eye")
+    else:  # the other models' lights are in the world
+        base, lights_in0 = scene, "world"
+        render_options.pop("lights_in", None)
     given = render_input(
         mesh, base, camera, None, shading=render_options.get("shading", "phong"), normals=None,
         colors=None, color_material=None, lights_in=lights_in0, model=render_options.get("model"),
         width=width, height=height, texture=False,
     )  # fmt: skip
     flat = str(render_options.get("shading", "phong")).lower() == "flat"
-    switches_searched = dict(SWITCHES)
-    gl_model = isinstance(base, Scene)
-    if not gl_model:
-        for name in GL_ONLY:
-            del switches_searched[name]
-    if flat:  # flat shading lights with the face normals: the vertex normals do not matter
-        del switches_searched["normals"]
-        switches_searched["provoking_vertex"] = PROVOKING
     start: dict[str, Any] = {
+        "shading_model": model_of(base),
         "specular": base.specular if isinstance(base, Scene) else "blinn",
         "specular_gate": base.specular_gate if isinstance(base, Scene) else True,
         "lights_in": lights_in0,
@@ -301,22 +306,25 @@ def explain(
     }
     transfer0 = render_options.pop("transfer", None) or "linear"
     clamp0 = render_options.pop("clamp", True)
-    for searched in ("normals", "width", "height", "depth"):
-        render_options.pop(searched, None)
+    for option in ("normals", "width", "height", "depth"):
+        render_options.pop(option, None)
     search = Search(
         given.vertices.astype(np.float64), given.faces, base, given.camera, target, flat,
-        render_options,
+        render_options, lights_in0,
     )  # fmt: skip
+    models = tuple(m for m in MODELS if search.scene_for(m) is not None)
+    searched = {model: _searched(models, model, flat) for model in models}
+    moved = functools.partial(_moved, start)
     before = search.residual(start, clamp0, transfer0)
     config = dict(start)
     score, post, picture = search.fit(config)
     tried: list[tuple[float, dict[str, Any], dict[str, Any]]] = [(score, post, config)]
     while True:
         trials = []
-        for name, values in switches_searched.items():
+        for name, values in searched[config["shading_model"]].items():
             for value in values:
                 if value != config[name]:
-                    candidate = {**config, name: value}
+                    candidate = moved(config, name, value)
                     trials.append((search.fit(candidate), candidate))
         for first, second in JOINT:
             for a, b in itertools.product(SWITCHES[first], SWITCHES[second]):
@@ -327,16 +335,18 @@ def explain(
         if ambient_trial is not None:
             trials.append(ambient_trial)
         tried.extend((fit[0], fit[1], candidate) for fit, candidate in trials)
-        (new_score, new_post, new_picture), candidate = min(trials, key=lambda t: t[0][0])
+        (new_score, new_post, new_picture), candidate = min(
+            trials, key=functools.partial(_ranked, config["shading_model"])
+        )
         if new_score >= score - MARGIN:
             break
         score, post, picture, config = new_score, new_post, new_picture, candidate
     # A switch taken early can be one the later ones make needless, yet undoing it gains less
     # than MARGIN: each is undone (the scales refitted) where that is no worse.
-    for name in switches_searched:
-        if config[name] == start[name]:
+    for name in SWITCHES | {"provoking_vertex": PROVOKING}:
+        if name not in searched[config["shading_model"]] or config[name] == start[name]:
             continue
-        candidate = {**config, name: start[name]}
+        candidate = moved(config, name, start[name])
         undone = [(search.fit(candidate), candidate)]
         ambient_trial = search.fit_ambient(candidate, undone[0][0][1])
         if ambient_trial is not None:
@@ -345,11 +355,12 @@ def explain(
         (new_score, new_post, new_picture), candidate = min(undone, key=lambda t: t[0][0])
         if new_score <= score + UNDO:
             score, post, picture, config = new_score, new_post, new_picture, candidate
-    named = functools.partial(_named, start, switches_searched, transfer0, clamp0)
+    named = functools.partial(_named, start, searched, transfer0, clamp0)
     switches = named(config, post)
-    # Decided away from the silhouettes, where another renderer's antialiasing differs.
+    # Decided away from the silhouettes, outer and inner, where another renderer's
+    # antialiasing differs.
     rows = np.asarray(picture)[..., :3].reshape(-1, 3)
-    inside = np.flatnonzero(~coverage_edges(np.asarray(picture)[..., 3] > 0).reshape(-1))
+    inside = np.flatnonzero(~_silhouettes(search.eye_distance(config)).reshape(-1))
     interior = search.mean_difference(rows, np.intersect1d(inside, search.valid))
     explained = interior <= noise and not _at_an_end(post, config)
     candidates: list[tuple[dict[str, Any], float]] = [(switches, score)]
@@ -377,6 +388,46 @@ def explain(
     )
 
 
+def _silhouettes(distance: NDArray[Any]) -> NDArray[np.bool_]:
+    """Pixels at the edge of what is drawn (`distance` from the eye's plane, inf where nothing
+    is), or beside a neighbour more than `DEPTH_STEP` nearer or farther: where one surface
+    passes in front of another."""
+    covered = np.isfinite(distance)
+    with np.errstate(divide="ignore"):
+        log_distance = np.log(np.where(covered, distance, 1.0))
+    return coverage_edges(covered) | depth_steps(log_distance, covered, math.log1p(DEPTH_STEP))
+
+
+def _searched(models: tuple[str, ...], model: str, flat: bool) -> dict[str, tuple[Any, ...]]:
+    """The switches searched, and their values, while the search is at `model`: the `models`
+    the scene converts to; GL's equation's own only for GL's model; the provoking vertex
+    instead of the normals with flat shading (which lights with the face normals)."""
+    switches = {k: v for k, v in SWITCHES.items() if model == "gl" or k not in GL_ONLY}
+    switches["shading_model"] = models
+    if flat:
+        del switches["normals"]
+        switches["provoking_vertex"] = PROVOKING
+    return switches
+
+
+def _moved(start: dict[str, Any], config: dict[str, Any], name: str, value: Any) -> dict[str, Any]:
+    """`config` with switch `name` at `value`. Moving to another model puts GL's equation's
+    own switches back where the render as meant has them, and at what the model fixes
+    (PyTorch3D's Phong reflection, say)."""
+    if name != "shading_model":
+        return {**config, name: value}
+    return {**config, name: value, **{k: start[k] for k in GL_ONLY}, **FIXED.get(value, {})}
+
+
+def _ranked(model: str, trial: tuple[Any, dict[str, Any]]) -> float:
+    """A trial's rank: its residual, and half a margin more for a change of model, so a picture
+    the current model's own switches explain as well is not put down to another model (where
+    two models draw the same picture: PyTorch3D's Phong is GL's with Phong's reflection when
+    the scene has no attenuation, spot or emission)."""
+    (residual, _, _), candidate = trial
+    return float(residual) + (MARGIN / 2 if candidate["shading_model"] != model else 0.0)
+
+
 def _cull(given: Any, scene: Any) -> str | None:
     """The culling the render as meant does, as the search names it (None: no culling): as
     `render` reads `cull`, None being the scene's default (three.js': by its material's
@@ -393,8 +444,9 @@ def _named(
     config: dict[str, Any],
     post: dict[str, Any],
 ) -> dict[str, Any]:
-    """The switches of `config` and its fitted `post` that differ from the render as meant."""
-    switches = {k: config[k] for k in searched if config[k] != start[k]}
+    """The switches of `config` and its fitted `post` that differ from the render as meant (of
+    those its model has)."""
+    switches = {k: config[k] for k in searched[config["shading_model"]] if config[k] != start[k]}
     if post["transfer"] != transfer0:
         switches["transfer"] = post["transfer"]
     if post["clamp"] != clamp0:

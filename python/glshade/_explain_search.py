@@ -1,7 +1,8 @@
 """The search behind `explain`: one render per candidate set of convention switches, and the
 transfer, clamp, light and ambient scales fitted to each on sampled pixels. The scene is GL's,
-glTF's or three.js'; the world models have no specular model, gate or shininess switch (those
-are GL's equation's), and their lights are in the world whatever the camera does."""
+glTF's or three.js', and the shading model is itself a switch (the scene converted by
+`as_model`); the other models have no specular model, gate or shininess switch (those are
+GL's equation's), and their lights are in the world whatever the camera does."""
 
 from __future__ import annotations
 
@@ -16,6 +17,7 @@ from numpy.typing import NDArray
 from . import _glshade, gltf, threejs
 from ._camera import Camera
 from ._intake import colors_checked, real
+from ._model_conversion import MODELS, as_model
 from ._normals import crease_normals, vertex_normals
 from ._render import render
 from ._scene import Lights, Material, Scene
@@ -24,6 +26,7 @@ from ._typing import Weighting
 
 # The discrete switches a render is searched over, and what each value means.
 SWITCHES: dict[str, tuple[Any, ...]] = {
+    "shading_model": MODELS,
     "specular": ("blinn", "phong"),
     "specular_gate": (True, False),
     "lights_in": ("eye", "world"),
@@ -35,9 +38,15 @@ SWITCHES: dict[str, tuple[Any, ...]] = {
     # Blinn against Phong exponents (4 and 1/4), 0-1 against 0-128 (128 and 1/128).
     "shininess_scale": (1.0, 1 / 128, 0.128, 0.25, 4.0, 7.8125, 128.0),
 }
-# GL's equation's own switches: a glTF or three.js scene has none of them, nor lights that move
-# with the eye.
+# GL's equation's own switches: the other models have none of them, nor lights that move with
+# the eye.
 GL_ONLY = ("specular", "specular_gate", "shininess_scale", "lights_in")
+# What PyTorch3D's Phong fixes of them: its scene is GL's, drawn with these.
+FIXED: dict[str, dict[str, Any]] = {
+    "pytorch3d": {
+        "specular": "phong", "specular_gate": True, "shininess_scale": 1.0, "lights_in": "world",
+    },
+}  # fmt: skip
 # Searched with flat shading only.
 PROVOKING = ("last", "first", "centroid")
 # Switches also tried together: clockwise faces culled as back faces are the counter-clockwise
@@ -148,10 +157,11 @@ def sampled_residual(
     log_k: float,
 ) -> float:  # fmt: skip
     """The mean |difference| of the pixels ``unlit + k lit`` (k = exp(log_k)), encoded, from
-    `target`."""
-    return float(
-        np.mean(np.abs(encoded_rgb(unlit + math.exp(log_k) * lit, clamp, transfer) - target))
-    )
+    `target`; inf where it is not finite (a render beyond float32's range)."""
+    with np.errstate(over="ignore", invalid="ignore"):
+        rgb = encoded_rgb(unlit + math.exp(log_k) * lit, clamp, transfer)
+        residual = float(np.mean(np.abs(rgb - target)))
+    return residual if math.isfinite(residual) else math.inf
 
 
 def decoded_rgb(encoded: NDArray[Any], transfer: str) -> NDArray[Any]:
@@ -203,8 +213,14 @@ class Search:
         target: NDArray[Any],
         flat: bool,
         render_options: dict[str, Any],
+        lights_in: str,
     ) -> None:
         self.v, self.f, self.scene, self.camera = vertices, faces, scene, camera
+        # The scene as each model's, made when first asked for (`lights_in`: where a GL
+        # scene's lights are given, for the conversion into world coordinates); None for a
+        # model whose ranges the converted values leave.
+        self.scenes: dict[str, AnyScene | None] = {}
+        self.lights_in = lights_in
         self.height, self.width = target.shape[:2]
         self.flat = flat
         self.render_options = render_options
@@ -217,10 +233,35 @@ class Search:
         self.sample = self.valid[rng.choice(count, min(PIXELS_FOR_FITS, count), replace=False)]
         self.renders = 0
         # Renders without light, RGB rows: emission and global ambient (`unlit`), emission
-        # alone (`dark`). Only what is drawn (culling, winding) and, with flat shading, the
-        # vertex whose colour a face takes change them: one of each per drawing.
+        # alone (`dark`): one of each per `drawing`.
         self.unlit: dict[Any, NDArray[Any]] = {}
         self.dark: dict[Any, NDArray[Any]] = {}
+
+    def scene_for(self, model: str) -> AnyScene | None:
+        """The scene as `model`'s, or None where it cannot be (an attenuation of 1e-320 is no
+        three.js intensity): that model is not a candidate."""
+        if model not in self.scenes:
+            try:
+                self.scenes[model] = as_model(
+                    self.scene, model, view=self.camera.view, lights_in=self.lights_in
+                )
+            except (ValueError, OverflowError):
+                self.scenes[model] = None
+        return self.scenes[model]
+
+    def drawn(self, config: dict[str, Any]) -> AnyScene:
+        """The scene `config` draws (its model's)."""
+        scene = self.scene_for(config["shading_model"])
+        assert scene is not None, "only the models with a scene are searched"
+        return scene
+
+    def drawing(self, config: dict[str, Any]) -> tuple[Any, ...]:
+        """What the renders without light depend on: the model, what is drawn (culling,
+        winding) and, with flat shading, the vertex whose colour a face takes."""
+        return (
+            config["shading_model"], config["cull"], config["winding"],
+            self.flat and config["provoking_vertex"],
+        )  # fmt: skip
 
     def faces(self, config: dict[str, Any]) -> NDArray[Any]:
         """The faces in the winding of `config`: clockwise swaps two corners, keeping the
@@ -241,7 +282,7 @@ class Search:
         the global ambient's times `ambient`."""
         self.renders += 1
         lit = scene_with(
-            self.scene, scale, config["specular"], config["specular_gate"],
+            self.drawn(config), scale, config["specular"], config["specular_gate"],
             shininess=config["shininess_scale"], ambient=ambient,
         )  # fmt: skip
         extra = {"provoking_vertex": config["provoking_vertex"]} if self.flat else {}
@@ -254,13 +295,31 @@ class Search:
             **self.render_options,
         ))  # fmt: skip
 
+    def eye_distance(self, config: dict[str, Any]) -> NDArray[Any]:
+        """The distance from the eye's plane of what `config` draws at each pixel, (height,
+        width) (inf where nothing is): GL's window depth through the projection undone."""
+        self.renders += 1
+        _, window = render(
+            self.v, self.faces(config), self.drawn(config), self.camera,
+            width=self.width, height=self.height,
+            cull=cast(Any, "none" if config["cull"] is None else config["cull"]), depth=True,
+            **self.render_options,
+        )  # fmt: skip
+        p = self.camera.projection_matrix(self.width, self.height)
+        ndc = 2.0 * np.asarray(window) - 1.0
+        # z_ndc = (p22 z + p23) / (p32 z + p33), solved for the eye's z.
+        with np.errstate(divide="ignore", invalid="ignore"):
+            z = (p[2, 3] - ndc * p[3, 3]) / (ndc * p[3, 2] - p[2, 2])
+        distance: NDArray[Any] = np.where(np.asarray(window) < 1.0, np.abs(z), np.inf)
+        return distance
+
     def rows(self, config: dict[str, Any], scale: float, ambient: float = 1.0) -> NDArray[Any]:
         """`draw`'s RGB as rows."""
         return self.draw(config, scale, ambient)[..., :3].reshape(-1, 3)
 
     def unlit_rows(self, config: dict[str, Any]) -> tuple[NDArray[Any], NDArray[Any] | None]:
         """Emission + a·ambient, and the ambient term (None when `a` is 1: not needed)."""
-        key = (config["cull"], config["winding"], self.flat and config["provoking_vertex"])
+        key = self.drawing(config)
         if key not in self.unlit:
             self.unlit[key] = self.rows(config, 0.0)
         if config["ambient_scale"] == 1.0:
@@ -276,11 +335,13 @@ class Search:
 
     def mean_difference(self, rows: NDArray[Any], where: NDArray[Any] | None = None) -> float:
         """The mean |difference| of RGB `rows` from the target's over its valid pixels (or
-        the row numbers `where`); 0 where there are none."""
+        the row numbers `where`); 0 where there are none, inf where it is not finite."""
         where = self.valid if where is None else where
         if len(where) == 0:
             return 0.0
-        return float(np.mean(np.abs(rows[where] - self.target[where])))
+        with np.errstate(invalid="ignore"):
+            residual = float(np.mean(np.abs(rows[where] - self.target[where])))
+        return residual if math.isfinite(residual) else math.inf
 
     def fit(self, config: dict[str, Any], post: dict[str, Any] | None = None) -> Fit:
         """The full-image residual of `config` with the transfer, clamp and light scale that fit
@@ -291,8 +352,11 @@ class Search:
         if post is None:
             # The search runs in float32: the transfer's powers are most of its time, and the
             # full-image residual below decides in float64.
-            s1, s0, st = (x[self.sample].astype(np.float32) for x in (lit1, lit0, self.target))
-            best: tuple[float, dict[str, Any]] = (math.inf, {})
+            with np.errstate(over="ignore"):  # beyond float32's range: inf, no fit
+                s1, s0, st = (x[self.sample].astype(np.float32) for x in (lit1, lit0, self.target))
+            best: tuple[float, dict[str, Any]] = (
+                math.inf, {"transfer": "linear", "clamp": True, "light_scale": 1.0}
+            )  # fmt: skip
             for transfer in TRANSFERS:
                 for clamp in CLAMPS:
                     residual = functools.partial(sampled_residual, s0, s1 - s0, st, clamp, transfer)
@@ -317,7 +381,7 @@ class Search:
         """The global ambient's scale and the light scale fitted together for `config` with
         `post`'s transfer and clamp; None when the scene has no global ambient term."""
         _, ambient_rows = self.unlit_rows({**config, "ambient_scale": 0.0})
-        key = (config["cull"], config["winding"], self.flat and config["provoking_vertex"])
+        key = self.drawing(config)
         if ambient_rows is None or not ambient_rows[self.sample].any():
             return None
         emission, ambient = self.dark[key][self.sample], ambient_rows[self.sample]

@@ -6,7 +6,8 @@ Every scene type is a `Model`: `glshade.Scene` (GL's fixed-function equation),
 `describe` and `render` take whatever the model, and answers for itself what differs between
 the models: which of GL's options it takes, the scene a render lights with, the faces a
 render culls by default. `shade`, `shade_mesh`, `render` and `dask` ask the scene and never
-test its type; `glsl` and `explain`, which draw GL's equation alone, refuse the others.
+test its type; `glsl`, which writes GL's equation alone, refuses the others, and `explain`
+converts a scene from one model to another (`_model_conversion`).
 
 The names of each model, in Python, in the binding and in the Rust crate (its state and its
 model)::
