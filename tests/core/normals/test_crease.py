@@ -50,7 +50,7 @@ def transcription(v: np.ndarray, f: np.ndarray, angle: float, weighting: str) ->
         for i, w in enumerate(face):
             total = np.zeros(3)
             for h, j in around[int(w)]:
-                if unit[g] @ unit[h] > limit:
+                if h == g or unit[g] @ unit[h] > limit:  # its own face always
                     total += terms[h, j]
             norm = np.linalg.norm(total)
             out[g, i] = total / norm if norm > 0 else 0
