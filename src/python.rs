@@ -23,6 +23,7 @@ mod runtime;
 mod scene;
 mod shading;
 mod threejs;
+mod transfer;
 
 /// The native part of glshade; use the `glshade` package, whose intake prepares the arguments.
 #[pymodule(gil_used = false)]
@@ -43,6 +44,8 @@ mod _glshade {
     use super::shading::{describe, shade, stream};
     #[pymodule_export]
     use super::threejs::ThreejsScene;
+    #[pymodule_export]
+    use super::transfer::encode;
 
     use pyo3::prelude::*;
 

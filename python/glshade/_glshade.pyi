@@ -16,6 +16,7 @@ __all__ = [
     "blend",
     "crease_normals",
     "describe",
+    "encode",
     "face_normals",
     "hillshade",
     "look_at",
@@ -239,6 +240,7 @@ class ThreejsScene:
         physically_correct_lights: bool,
     ) -> ThreejsScene: ...
 
+def encode(values: NDArray[np.floating[Any]], transfer: str, *, rgba: bool) -> None: ...
 def crease_normals(
     vertices: NDArray[np.floating[Any]],
     faces: NDArray[np.int64],

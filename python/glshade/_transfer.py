@@ -9,6 +9,7 @@ from typing import Any, Literal
 import numpy as np
 from numpy.typing import ArrayLike
 
+from . import _glshade
 from ._intake import array, one_of
 from ._typing import FloatArray
 
@@ -17,8 +18,8 @@ __all__ = ["Transfer", "srgb_decode", "srgb_encode"]
 Transfer = Literal["linear", "srgb", "gamma2.2"]
 TRANSFERS: tuple[str, ...] = ("linear", "srgb", "gamma2.2")
 
-# IEC 61966-2-1's constants: the linear segment's end, its slope, and the power segment.
-_LINEAR_END = 0.0031308
+# IEC 61966-2-1's constants (decoding's; the core holds encoding's): the encoded linear
+# segment's end, its slope, and the power segment.
 _ENCODED_END = 0.04045
 _SLOPE = 12.92
 _A = 0.055
@@ -45,6 +46,16 @@ def _mirrored(a: Any, curve: Callable[[Any], Any]) -> FloatArray:
     with np.errstate(invalid="ignore"):
         result: FloatArray = np.copysign(curve(np.abs(a)), a).astype(a.dtype, copy=False)
     return result
+
+
+def _encoded(a: FloatArray, name: str) -> FloatArray:
+    """A copy of `a` (float32 or float64) encoded by the transfer `name` in the core, the code
+    a render encodes its pixels with: the same bits on every machine (numpy's own power
+    differs by an ulp on some, where it runs SIMD code of its own)."""
+    out = np.array(a, order="C", copy=True)
+    if out.size:
+        _glshade.encode(out, name, rgba=False)
+    return out
 
 
 def srgb_encode(x: ArrayLike) -> FloatArray:
@@ -86,10 +97,7 @@ def srgb_encode(x: ArrayLike) -> FloatArray:
     >>> gs.srgb_encode([0.0, 0.0031308, 0.18, 1.0]).round(4)
     array([0.    , 0.0404, 0.4614, 1.    ])
     """
-    return _mirrored(
-        _values(x),
-        lambda m: np.where(m <= _LINEAR_END, _SLOPE * m, (1 + _A) * m ** (1 / _GAMMA) - _A),
-    )
+    return _encoded(_values(x), "srgb")
 
 
 def srgb_decode(x: ArrayLike) -> FloatArray:
@@ -151,8 +159,8 @@ def transfer_in_place(rgba: Any, name: str) -> None:
     """Applies the transfer `name` to the RGB of the float array `rgba` (..., 4), in place."""
     if name == "linear":
         return
-    rgb = rgba[..., :3]
-    if name == "srgb":
-        rgba[..., :3] = srgb_encode(rgb)
+    whole = rgba.dtype in (np.float32, np.float64) and rgba.shape[-1:] == (4,)
+    if whole and rgba.flags.c_contiguous and rgba.flags.writeable:
+        _glshade.encode(rgba, name, rgba=True)
     else:
-        rgba[..., :3] = _mirrored(rgb, lambda m: m ** (1 / 2.2))
+        rgba[..., :3] = _encoded(rgba[..., :3], name)
