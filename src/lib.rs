@@ -140,4 +140,4 @@ pub use render::raster::{Cull, Viewport};
 pub use render::shader::RenderModel;
 pub use render::texture::{Filter, Texels, Texture, Wrap};
 pub use render::transfer::Transfer;
-pub use render::{render, render_draws};
+pub use render::{render, render_draws, render_views};

@@ -364,6 +364,63 @@ pub fn render_draws<T: Real, M: RenderModel>(
     }
 }
 
+/// Renders `draws` once for each camera of `cameras`, as [`render_draws`] renders one view,
+/// into consecutive frames of `images` (k × height × width × 4) and `depths` (k × height ×
+/// width): what does not depend on the view, the normals a mesh placed by its model matrix
+/// lacks, is computed once. Each view's pixels are those [`render_draws`] gives it alone.
+///
+/// # Errors
+/// Those of [`render_draws`]; a value error when `images` and `depths` do not hold one frame
+/// a camera.
+pub fn render_views<T: Real, M: RenderModel>(
+    draws: &[Draw<'_, T, M>],
+    cameras: &[Camera],
+    options: &RenderOptions,
+    images: &mut [T],
+    depths: &mut [T],
+    stop: &Stop,
+) -> Result<(), Error> {
+    options.viewport.validate()?;
+    let Viewport { width, height } = options.viewport;
+    let area = count(&[width, height], "the image")?;
+    let views = cameras.len();
+    if views == 0
+        || Some(images.len()) != area.checked_mul(4 * views)
+        || depths.len() != area * views
+    {
+        return Err(Error::value(format!(
+            "the images must hold {views} x {height} x {width} x 4 values and the depths \
+             {views} x {height} x {width}, for at least one camera, got {} and {}",
+            images.len(),
+            depths.len()
+        )));
+    }
+    for draw in draws {
+        check_faces(draw.mesh.faces, draw.mesh.vertices.len())?;
+    }
+    let computed = draws
+        .iter()
+        .map(|draw| match draw.placement {
+            Placement::Model => normals_of(&draw.mesh, options.shading, stop),
+            // Placed per vertex first: their normals come from the placed vertices.
+            Placement::Vertices => Ok(None),
+        })
+        .collect::<Result<Vec<_>, _>>()?;
+    let shared = draws.iter().zip(&computed).map(|(draw, computed)| Draw {
+        mesh: Mesh {
+            normals: draw.mesh.normals.or(computed.as_deref()),
+            ..draw.mesh
+        },
+        ..*draw
+    });
+    let shared = try_collect(shared, "the draws")?;
+    let frames = images.chunks_mut(area * 4).zip(depths.chunks_mut(area));
+    for (camera, (image, depth)) in cameras.iter().zip(frames) {
+        render_draws(&shared, camera, options, image, depth, stop)?;
+    }
+    Ok(())
+}
+
 /// The normals `mesh` lacks for `shading`: its face normals for flat shading, its
 /// angle-weighted vertex normals otherwise; `None` when it has its own.
 ///
@@ -676,9 +733,9 @@ mod tests {
         (vertices, faces)
     }
 
-    #[test]
-    fn several_draws_render_as_their_meshes_merged() {
-        let scene = Scene {
+    /// GL's default scene with one directional light, validated.
+    fn one_light() -> crate::gl::scene::ValidScene {
+        Scene {
             lights: vec![crate::gl::light::Light {
                 position: [0.3, 0.5, 1.0, 0.0],
                 ..crate::gl::light::Light::default()
@@ -686,7 +743,12 @@ mod tests {
             ..Scene::default()
         }
         .validated()
-        .unwrap();
+        .unwrap()
+    }
+
+    #[test]
+    fn several_draws_render_as_their_meshes_merged() {
+        let scene = one_light();
         let (a, fa) = fan(0.1);
         let (b, fb) = fan(-0.2);
         let shifted: Vec<[f64; 3]> = b.iter().map(|v| [v[0] + 0.3, v[1] - 0.2, v[2]]).collect();
@@ -738,6 +800,60 @@ mod tests {
             for (x, y) in image.iter().zip(&expected_image) {
                 assert!((x - y).abs() < 1e-12, "{shading:?}: {x} {y}");
             }
+        }
+    }
+
+    #[test]
+    fn views_render_as_their_cameras_alone() {
+        let scene = one_light();
+        let (vertices, faces) = fan(0.1);
+        let draws = [Draw {
+            mesh: Mesh {
+                vertices: &vertices,
+                faces: &faces,
+                normals: None,
+                colors: None,
+                textured: None,
+            },
+            scene: &scene,
+            model: DMat4::IDENTITY,
+            cull: Cull::None,
+            placement: Placement::Model,
+        }];
+        let cameras: Vec<Camera> = [0.0, 0.7, 2.1]
+            .iter()
+            .map(|&turn| Camera {
+                view: DMat4::from_rotation_y(turn) * DMat4::from_rotation_x(0.4 * turn),
+                ..Camera::default()
+            })
+            .collect();
+        for shading in [Shading::Flat, Shading::Gouraud, Shading::Phong] {
+            let options = RenderOptions {
+                viewport: Viewport {
+                    width: 61,
+                    height: 47,
+                },
+                shading,
+                ..RenderOptions::default()
+            };
+            let (area, stop) = (61 * 47, Stop::new());
+            let mut images = vec![0.0; 3 * area * 4];
+            let mut depths = vec![0.0; 3 * area];
+            render_views(&draws, &cameras, &options, &mut images, &mut depths, &stop).unwrap();
+            for (k, camera) in cameras.iter().enumerate() {
+                let (mut image, mut depth) = (vec![0.0; area * 4], vec![0.0; area]);
+                render_draws(&draws, camera, &options, &mut image, &mut depth, &stop).unwrap();
+                assert!(depth.iter().filter(|&&z| z < 1.0).count() > 100);
+                assert_eq!(
+                    image,
+                    images[k * area * 4..(k + 1) * area * 4],
+                    "{shading:?}"
+                );
+                assert_eq!(depth, depths[k * area..(k + 1) * area], "{shading:?}");
+            }
+            let mut short = vec![0.0; 2 * area * 4];
+            let error = render_views(&draws, &cameras, &options, &mut short, &mut depths, &stop);
+            assert!(error.unwrap_err().message.contains("3 x 47 x 61 x 4"));
         }
     }
 

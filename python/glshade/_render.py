@@ -3,6 +3,9 @@ transfer function."""
 
 from __future__ import annotations
 
+import functools
+import os
+from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any, Literal, cast, overload
 
 import numpy as np
@@ -12,11 +15,13 @@ from . import _glshade
 from ._camera import Camera
 from ._image import Image
 from ._intake import choice, color, flag, integer, one_of, rgba, transform, warn_if_bytes
+from ._normals import face_normals, vertex_normals
 from ._pyrender import is_pyrender_scene, render_pyrender
 from ._render_input import render_input
 from ._scenes import AnyScene
 from ._texture import FILTERS, texels, wrap_modes
 from ._transfer import Transfer, apply_transfer, transfer_name
+from ._trimesh import load
 from ._typing import ColorMaterialMode, Cull, Face, FloatArray, ProvokingVertex, Shading, Space
 
 if TYPE_CHECKING:
@@ -30,8 +35,28 @@ __all__ = ["render"]
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | AnyScene | None = ...,
-    scene: AnyScene | Camera | None = ...,
+    faces: ArrayLike | AnyScene | None,
+    scene: AnyScene | Camera | None,
+    camera: Sequence[Camera],
+    *,
+    depth: Literal[False] = ...,
+    **options: Unpack[RenderOptions],
+) -> FloatArray: ...
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | AnyScene | None,
+    scene: AnyScene | Camera | None,
+    camera: Sequence[Camera],
+    *,
+    depth: Literal[True],
+    **options: Unpack[RenderOptions],
+) -> tuple[FloatArray, FloatArray]: ...
+@overload
+def render(
+    vertices: Any,
+    faces: ArrayLike | AnyScene | Sequence[Camera] | None = ...,
+    scene: AnyScene | Camera | Sequence[Camera] | None = ...,
     camera: Camera | None = ...,
     *,
     depth: Literal[False] = ...,
@@ -40,8 +65,8 @@ def render(
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | AnyScene | None = ...,
-    scene: AnyScene | Camera | None = ...,
+    faces: ArrayLike | AnyScene | Sequence[Camera] | None = ...,
+    scene: AnyScene | Camera | Sequence[Camera] | None = ...,
     camera: Camera | None = ...,
     *,
     depth: Literal[True],
@@ -50,18 +75,18 @@ def render(
 @overload
 def render(
     vertices: Any,
-    faces: ArrayLike | AnyScene | None = ...,
-    scene: AnyScene | Camera | None = ...,
-    camera: Camera | None = ...,
+    faces: ArrayLike | AnyScene | Sequence[Camera] | None = ...,
+    scene: AnyScene | Camera | Sequence[Camera] | None = ...,
+    camera: Camera | Sequence[Camera] | None = ...,
     *,
     depth: bool,
     **options: Unpack[RenderOptions],
-) -> Image | tuple[Image, FloatArray]: ...
+) -> Image | FloatArray | tuple[Image | FloatArray, FloatArray]: ...
 def render(
     vertices: Any,
-    faces: ArrayLike | AnyScene | None = None,
-    scene: AnyScene | Camera | None = None,
-    camera: Camera | None = None,
+    faces: ArrayLike | AnyScene | Sequence[Camera] | None = None,
+    scene: AnyScene | Camera | Sequence[Camera] | None = None,
+    camera: Camera | Sequence[Camera] | None = None,
     *,
     width: int = 512,
     height: int = 512,
@@ -84,15 +109,18 @@ def render(
     texture_filter: str = "linear",
     texture_wrap: str | tuple[str, str] = "repeat",
     depth: bool = False,
-) -> Image | tuple[Image, FloatArray]:
+) -> Image | FloatArray | tuple[Image | FloatArray, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
 
     Parameters
     ----------
-    vertices : (n, 3) float32 or float64, or a mesh
+    vertices : (n, 3) float32 or float64, or a mesh, or a path
         Vertex positions in model coordinates; or, with `faces` omitted, an object with
         ``.vertices`` and ``.faces`` (a ``trimesh.Trimesh``) or a ``trimesh.Scene`` (flattened
-        by ``scene.to_mesh()``, its graph's transforms applied), or a ``(vertices, faces)``
+        by ``scene.to_mesh()``, its graph's transforms applied; its own camera, where it has
+        one and no `camera` is given), a file's path (a ``str`` or ``os.PathLike``: what
+        ``trimesh.load`` reads, glTF, OBJ, PLY, STL..., with its colours and texture), or a
+        ``(vertices, faces)``
         tuple as `glshade.meshes` returns: ``render(mesh)``, ``render(mesh, scene)``,
         ``render(mesh, camera)``, ``render(mesh, scene, camera)``. Or a ``pyrender.Scene``,
         alone: ``render(pyrender_scene, width=, height=)`` draws its meshes with their
@@ -120,8 +148,13 @@ def render(
         dim fill from the lower right, both directional and fixed in the world (whatever
         `lights_in` says, so an orbiting camera sees them stay put), a light grey material
         with a soft highlight, GL's global ambient and a local viewer at the eye.
-    camera : Camera, optional
-        The view and projection. None (the default): a perspective camera (35 degrees
+    camera : Camera or a sequence of Camera, optional
+        The view and projection (`Camera.look_at`, or a camera as another library gives it:
+        `Camera.from_pose`, `Camera.from_opencv`, `Camera.from_pyrender`,
+        `Camera.from_trimesh`). A list or tuple of cameras (`Camera.orbit` makes a turntable)
+        renders the mesh from each in one call, the normals computed once: the result is a
+        (k, height, width, 4) ndarray (and a (k, height, width) depth), view i equal to
+        rendering with camera i alone. None (the default): a perspective camera (35 degrees
         vertically) that frames the mesh's bounds wherever it is and whatever its size: it
         looks at the centre of the bounding box of the vertices (placed by `model`) from in
         front, to the right and above (the direction (0.45, 0.35, 1) with +y up), from the
@@ -215,14 +248,18 @@ def render(
     Returns
     -------
     Image
-        (height, width, 4) RGBA of the vertices' dtype, row 0 at the top of the picture.
+        (height, width, 4) RGBA of the vertices' dtype, row 0 at the top of the picture; for
+        a sequence of k cameras a (k, height, width, 4) ndarray.
     depth : (height, width) ndarray, with ``depth=True``
-        GL window depth in [0, 1] (``glDepthRange(0, 1)``), 1 where nothing is drawn.
+        GL window depth in [0, 1] (``glDepthRange(0, 1)``), 1 where nothing is drawn; (k,
+        height, width) for k cameras.
 
     Raises
     ------
     IndexError
         For a face index out of range.
+    FileNotFoundError
+        For a path that names no file (and ImportError without trimesh to read one).
     ValueError, TypeError
         For wrong shapes, dtypes, names, sizes or matrices; a colour given by name.
 
@@ -262,6 +299,9 @@ def render(
             clamp=flag(clamp, "clamp"), depth=flag(depth, "depth"),
         )  # fmt: skip
     encoding = transfer_name("linear" if transfer is None else transfer)
+    if isinstance(vertices, (str, os.PathLike)):
+        vertices = load(vertices)
+    views, (faces, scene, camera) = _views((faces, scene, camera))
     given = render_input(
         vertices,
         faces,
@@ -290,12 +330,10 @@ def render(
     warn_if_bytes(color(background, "background"), "background", "render")
     # The background is encoded as the pixels are, in the image's dtype.
     clear = apply_transfer(np.array([rgba(background, "background")], dtype=v.dtype), encoding)
-    image, z = _glshade.render(
+    draw = functools.partial(
+        _glshade.render,
         v,
         f,
-        given.scene._native,
-        view=lens.view,
-        projection=lens.projection_matrix(w, h),
         model=transform(model, "model"),
         width=w,
         height=h,
@@ -303,7 +341,6 @@ def render(
         provoking_vertex=one_of(
             provoking_vertex, "provoking_vertex", ("last", "first", "centroid")
         ),
-        normals=n,
         colors=c,
         cull="none" if cull is None else choice(cull, "cull"),
         background=clear[0].astype(np.float64),
@@ -315,5 +352,39 @@ def render(
         texture_wrap=wrap_modes(texture_wrap),
         **gl,
     )
-    result = image.view(Image)
-    return (result, z) if depth else result
+    if views is None:
+        image, z = draw(
+            scene=given.scene._native, view=lens.view, projection=lens.projection_matrix(w, h),
+            normals=n,
+        )  # fmt: skip
+        result: Image | FloatArray = image.view(Image)
+        return (result, z) if depth else result
+    projections = [camera.projection_matrix(w, h) for camera in views]
+    assert given.meant is not None
+    lit = [given.meant._lit_scene(camera.view, given.space) for camera in views]
+    if all(scene is lit[0] for scene in lit):  # one scene for every view: one native call
+        image, z = draw(
+            scene=lit[0]._native, view=np.stack([camera.view for camera in views]),
+            projection=np.stack(projections), normals=n,
+        )  # fmt: skip
+    else:  # lights fixed in the world: each view lit by its own scene, the normals shared
+        if n is None:
+            n = face_normals(v, f) if mode == "flat" else vertex_normals(v, f)
+        frames = [
+            draw(scene=scene._native, view=camera.view, projection=p, normals=n)
+            for scene, camera, p in zip(lit, views, projections, strict=True)
+        ]
+        image, z = np.stack([i for i, _ in frames]), np.stack([d for _, d in frames])
+    return (image, z) if depth else image
+
+
+def _views(slots: tuple[Any, Any, Any]) -> tuple[list[Camera] | None, tuple[Any, Any, Any]]:
+    """The cameras of a call given a list or tuple of them (in whichever of the `faces`,
+    `scene` and `camera` places the call form puts a camera), and the places with the first
+    camera in its stead; None and the places as they are for a call of one camera."""
+    for place, value in enumerate(slots):
+        if isinstance(value, (list, tuple)) and value and all(isinstance(c, Camera) for c in value):
+            changed = list(slots)
+            changed[place] = value[0]
+            return list(value), (changed[0], changed[1], changed[2])
+    return None, slots

@@ -1,6 +1,7 @@
 """The arguments of `render` (and of `glsl.render`) as the pipeline takes them: the mesh and its
 own colours, face colours on unshared vertices, the scene in eye coordinates; without a camera
-one that frames the mesh, without a scene the default one (`_framing`)."""
+one that frames the mesh (or a trimesh scene's own camera), without a scene the default one
+(`_framing`)."""
 
 from __future__ import annotations
 
@@ -15,7 +16,7 @@ from ._framing import default_scene, frame
 from ._intake import color_values, one_of, rows, transform, vertex_colors
 from ._model import SCENES, Model, is_scene
 from ._normals import vertex_normals
-from ._trimesh import as_mesh, is_mesh, mesh_arrays, mesh_colors, mesh_texture
+from ._trimesh import as_mesh, has_own_camera, is_mesh, mesh_arrays, mesh_colors, mesh_texture
 from ._typing import FloatArray
 
 
@@ -34,6 +35,10 @@ class RenderInput:
     camera: Camera
     uv: FloatArray | None = None
     texture: Any = None
+    # The scene as given and where its lights are ("eye" or "world"): another camera's
+    # render lights with ``meant._lit_scene(view, space)``.
+    meant: Model | None = None
+    space: str = "eye"
 
 
 def is_pair(obj: Any) -> bool:
@@ -83,8 +88,9 @@ def _arranged(vertices: Any, faces: Any, scene: Any, camera: Any) -> tuple[Any, 
         )
     if camera is not None and not isinstance(camera, Camera):
         raise TypeError(
-            f"camera must be a glshade.Camera, or None for one that frames the mesh, got "
-            f"{type(camera)!r}; {order}"
+            f"camera must be a glshade.Camera, a list of them, or None for one that frames "
+            f"the mesh, got {type(camera)!r} (a 4 x 4 pose: Camera.from_pose; OpenCV's K, R, "
+            f"t: Camera.from_opencv; a pyrender camera: Camera.from_pyrender); {order}"
         )
     return vertices, faces, scene, camera
 
@@ -111,6 +117,8 @@ def render_input(
     when not given); without a scene, the default one, in world coordinates whatever
     `lights_in` says."""
     vertices, faces, scene, camera = _arranged(vertices, faces, scene, camera)
+    if camera is None and faces is None and has_own_camera(vertices):
+        camera = Camera.from_trimesh(vertices)
     space = one_of(lights_in, "lights_in", ("eye", "world"))
     mesh = as_mesh(vertices) if faces is None and is_mesh(vertices) else None
     v, f = mesh_arrays(vertices if mesh is None else mesh, faces)
@@ -181,4 +189,4 @@ def render_input(
         # The default lights belong to the world: an orbiting camera sees them stay put.
         scene, space = default_scene(), "world"
     lit = scene._lit_scene(camera.view, space)
-    return RenderInput(v, f, n, c, color_material, lit, camera, t, image)
+    return RenderInput(v, f, n, c, color_material, lit, camera, t, image, scene, space)

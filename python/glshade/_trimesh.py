@@ -1,10 +1,12 @@
 """Meshes as they come: a ``trimesh.Trimesh`` (or anything with ``.vertices`` and ``.faces``), a
-``trimesh.Scene`` flattened into one mesh, the colours a mesh carries, and the (vertices, faces)
-arrays of a mesh or of arrays given as they are. trimesh itself is never imported: its objects
-are read through their attributes."""
+``trimesh.Scene`` flattened into one mesh (and its own camera), the colours a mesh carries, the
+(vertices, faces) arrays of a mesh or of arrays given as they are, and a file's mesh. trimesh
+is imported only to load a file: its objects are read through their attributes."""
 
 from __future__ import annotations
 
+import importlib
+import os
 from typing import Any
 
 import numpy as np
@@ -21,6 +23,32 @@ def is_mesh(obj: Any) -> bool:
 
 def _is_scene(obj: Any) -> bool:
     return hasattr(obj, "geometry") and hasattr(obj, "graph") and hasattr(obj, "dump")
+
+
+def has_own_camera(obj: Any) -> bool:
+    """A ``trimesh.Scene`` whose camera was set (loaded from a file, or ``scene.camera``
+    asked for): not one its ``camera`` property would make up on first reading."""
+    return _is_scene(obj) and bool(getattr(obj, "has_camera", False))
+
+
+def load(path: str | os.PathLike[str]) -> Any:
+    """The mesh or scene ``trimesh.load`` reads from `path` (glTF, OBJ, PLY, STL, OFF and the
+    other formats trimesh reads)."""
+    try:
+        trimesh = importlib.import_module("trimesh")
+    except ImportError:
+        raise ImportError(
+            f"rendering a file ({os.fspath(path)!r}) needs trimesh to read it: pip install trimesh"
+        ) from None
+    if not os.path.isfile(path):
+        raise FileNotFoundError(f"vertices names a file that does not exist: {os.fspath(path)!r}")
+    loaded = trimesh.load(path)
+    if not is_mesh(loaded):
+        raise TypeError(
+            f"{os.fspath(path)!r} holds a {type(loaded).__name__}, not a triangle mesh: "
+            "glshade renders triangles"
+        )
+    return loaded
 
 
 def as_mesh(obj: Any) -> Any:

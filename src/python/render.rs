@@ -198,12 +198,14 @@ impl<'py, T: Element + Real> ReadDraw<'py, T> {
     }
 }
 
-/// Renders `draws`, of one model (`first` is the first one's state) and of vertices of `T`.
+/// Renders `draws`, of one model (`first` is the first one's state) and of vertices of `T`,
+/// seen by each of `views`: one frame, or a stack of them (k, height, width, ...) for
+/// `Views::Stack`.
 fn render_typed<'py, T: Element + Real, M: BindingModel>(
     py: Python<'py>,
     draws: &[DrawArgs<'py>],
     first: &M,
-    camera: &Camera,
+    views: &Views,
     options: &RenderOptions,
 ) -> Rendered<'py> {
     let at = |d: usize| {
@@ -245,33 +247,98 @@ fn render_typed<'py, T: Element + Real, M: BindingModel>(
     }
     let Viewport { width, height } = options.viewport;
     options.viewport.validate().map_err(to_pyerr)?;
-    let image = zeros::<T>(py, &[height, width, 4])?;
-    let depth = zeros::<T>(py, &[height, width])?;
+    let (image, depth) = if views.stacked {
+        let k = views.cameras.len();
+        (
+            zeros::<T>(py, &[k, height, width, 4])?,
+            zeros::<T>(py, &[k, height, width])?,
+        )
+    } else {
+        (
+            zeros::<T>(py, &[height, width, 4])?,
+            zeros::<T>(py, &[height, width])?,
+        )
+    };
     {
         let (mut image, mut depth) = (image.readwrite(), depth.readwrite());
         let (image, depth) = (image.as_slice_mut()?, depth.as_slice_mut()?);
+        let cameras = &views.cameras;
         run(py, true, |stop| {
-            crate::render::render_draws(&meshes, camera, options, image, depth, stop)
+            if views.stacked {
+                crate::render::render_views(&meshes, cameras, options, image, depth, stop)
+            } else {
+                crate::render::render_draws(&meshes, &cameras[0], options, image, depth, stop)
+            }
         })?;
     }
     Ok((image.into_any(), depth.into_any()))
+}
+
+/// The cameras of a render: one, for a frame, or a stack of frames, one a camera.
+struct Views {
+    cameras: Vec<Camera>,
+    stacked: bool,
+}
+
+impl Views {
+    /// The cameras of `view` and `projection`, (4, 4) each or (k, 4, 4) each.
+    fn parse(
+        view: &PyReadonlyArrayDyn<'_, f64>,
+        projection: &PyReadonlyArrayDyn<'_, f64>,
+    ) -> PyResult<Self> {
+        let stack = |m: &PyReadonlyArrayDyn<'_, f64>, name: &str| -> PyResult<Vec<glam::DMat4>> {
+            let values = m.as_slice().ok().filter(|_| m.is_c_contiguous());
+            match (values, m.shape()) {
+                (Some(v), [4, 4]) => Ok(vec![matrix_of(v)]),
+                (Some(v), [_, 4, 4]) => Ok(v.chunks_exact(16).map(matrix_of).collect()),
+                _ => Err(PyValueError::new_err(format!(
+                    "{name} must be a C-contiguous (4, 4) or (k, 4, 4) array, got shape {}",
+                    shape_text(m.shape())
+                ))),
+            }
+        };
+        let (views, projections) = (stack(view, "view")?, stack(projection, "projection")?);
+        if views.len() != projections.len() || views.is_empty() {
+            return Err(PyValueError::new_err(format!(
+                "view and projection must hold as many matrices, at least one, got {} and {}",
+                views.len(),
+                projections.len()
+            )));
+        }
+        let cameras = views
+            .into_iter()
+            .zip(projections)
+            .map(|(view, projection)| Camera { view, projection })
+            .collect();
+        Ok(Self {
+            cameras,
+            stacked: view.ndim() == 3 || projection.ndim() == 3,
+        })
+    }
+}
+
+/// A (4, 4) matrix of 16 row-major values.
+fn matrix_of(rows: &[f64]) -> glam::DMat4 {
+    let mut values = [0.0; 16];
+    values.copy_from_slice(rows);
+    glam::DMat4::from_cols_array(&values).transpose()
 }
 
 /// The work of one render, done with whichever model the first draw's scene is.
 struct RenderWork<'a, 'py> {
     py: Python<'py>,
     draws: &'a [DrawArgs<'py>],
-    camera: &'a Camera,
+    views: &'a Views,
     options: &'a RenderOptions,
 }
 
 impl<'py> OnModel for RenderWork<'_, 'py> {
     type Output = Rendered<'py>;
     fn call<M: BindingModel>(self, first: &M) -> Self::Output {
-        let (py, draws, camera, options) = (self.py, self.draws, self.camera, self.options);
+        let (py, draws, views, options) = (self.py, self.draws, self.views, self.options);
         match float_of(&draws[0].vertices, "vertices")? {
-            Float::F32 => render_typed::<f32, M>(py, draws, first, camera, options),
-            Float::F64 => render_typed::<f64, M>(py, draws, first, camera, options),
+            Float::F32 => render_typed::<f32, M>(py, draws, first, views, options),
+            Float::F64 => render_typed::<f64, M>(py, draws, first, views, options),
         }
     }
 }
@@ -302,7 +369,8 @@ fn background(background: &PyReadonlyArray1<'_, f64>) -> PyResult<[f64; 4]> {
 /// and passes GL's options (`color_material` to `rescale_normal`) for a `glshade.Scene` only.
 /// `transfer` encodes the drawn pixels' RGB; `background` is written as it is (the caller
 /// encodes it). Returns the (height, width, 4) image and the (height, width) depth, of the
-/// vertices' dtype.
+/// vertices' dtype; with `view` and `projection` of shape (k, 4, 4), one view a pair, the
+/// (k, height, width, 4) images and (k, height, width) depths, the normals computed once.
 #[pyfunction]
 #[pyo3(signature = (
     vertices, faces, scene, *, view, projection, model, width, height, shading, provoking_vertex,
@@ -315,8 +383,8 @@ pub fn render<'py>(
     vertices: Bound<'py, PyUntypedArray>,
     faces: Bound<'py, PyUntypedArray>,
     scene: AnyScene<'py>,
-    view: PyReadonlyArray2<'py, f64>,
-    projection: PyReadonlyArray2<'py, f64>,
+    view: PyReadonlyArrayDyn<'py, f64>,
+    projection: PyReadonlyArrayDyn<'py, f64>,
     model: PyReadonlyArray2<'py, f64>,
     width: usize,
     height: usize,
@@ -365,12 +433,12 @@ pub fn render<'py>(
         colors,
         texture,
     };
-    let camera = self::camera(&view, &projection)?;
+    let views = Views::parse(&view, &projection)?;
     let draws = [draw];
     draws[0].scene.with(RenderWork {
         py,
         draws: &draws,
-        camera: &camera,
+        views: &views,
         options: &options,
     })
 }
@@ -448,11 +516,14 @@ pub fn render_draws<'py>(
             texture: TextureArgs::parse(texture, uv, &filter, &wrap)?,
         });
     }
-    let camera = self::camera(&view, &projection)?;
+    let views = Views {
+        cameras: vec![self::camera(&view, &projection)?],
+        stacked: false,
+    };
     parsed[0].scene.with(RenderWork {
         py,
         draws: &parsed,
-        camera: &camera,
+        views: &views,
         options: &options,
     })
 }

@@ -121,3 +121,38 @@ def test_depth_and_coverage_match_pyrender(case: str) -> None:
     inner = ~silhouette(covered)[both]
     assert difference[inner].max() < ATOL_DEPTH
     assert difference.max() < ATOL_DEPTH_EDGE
+
+
+@pytest.mark.parametrize("kind", ["perspective", "orthographic", "intrinsics", "infinite"])
+def test_a_pyrender_camera_sees_what_pyrender_sees(kind: str) -> None:
+    """`Camera.from_pyrender` of each pyrender camera class at a pose: pyrender's own
+    projection matrix at the render's size, the pose's inverse as the view, and pyrender's
+    depth and coverage through them (its sample 0 allowed for, as above)."""
+    pyrender = pyrender_module()
+    width, height, near, far = 160, 120, 0.5, 10.0
+    pose = np.linalg.inv(gs.Camera.look_at((0.4, -2.2, 2.0), (0.1, 0, 0), (0, 0, 1)).view)
+    camera = {
+        "perspective": lambda: pyrender.PerspectiveCamera(np.radians(50), near, far),
+        "orthographic": lambda: pyrender.OrthographicCamera(xmag=1.6, ymag=1.2, znear=near,
+                                                            zfar=far),
+        "intrinsics": lambda: pyrender.IntrinsicsCamera(150.0, 140.0, 70.0, 66.0, near, far),
+        "infinite": lambda: pyrender.PerspectiveCamera(np.radians(50), near, None),
+    }[kind]()  # fmt: skip
+    ours = gs.Camera.from_pyrender(camera, pose)
+    np.testing.assert_allclose(ours.view, np.linalg.inv(pose), atol=1e-12)
+    projection = ours.projection_matrix(width, height)
+    np.testing.assert_allclose(projection, camera.get_projection_matrix(width, height), atol=1e-12)
+    node = pyrender.Node(camera=camera, matrix=pose)
+    np.testing.assert_allclose(gs.Camera.from_pyrender(node).view, ours.view, atol=1e-12)
+    mesh = torus(48, 32)
+    theirs = pyrender_depth(mesh, camera, pose, (width, height))
+    shift = np.eye(4)
+    shift[:2, 3] = -2 * np.array(SAMPLE_0) / (width, height)
+    sampled = gs.Camera(ours.view, shift @ projection)
+    args: dict[str, Any] = {"width": width, "height": height, "cull": "back", "depth": True}
+    _, depth = gs.render(*mesh, gs.Scene(), sampled, **args)
+    covered, their_covered = depth < 1, theirs > 0
+    assert 0.05 < covered.mean() < 0.95
+    differ = covered != their_covered
+    assert differ.mean() < MAX_COVERAGE_DIFFERENCE
+    assert not (differ & ~silhouette(covered)).any(), "coverage differs away from the edges"

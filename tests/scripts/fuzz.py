@@ -1,7 +1,8 @@
 """Random arguments to every public function and scene type (GL's, glTF's and three.js'
 models, their lights and materials, textures, relief, `Image`, `compare`, `explain`, pyrender
 scenes when pyrender is installed): nothing but the documented exceptions (TypeError,
-ValueError, IndexError, MemoryError). A `ColorRangeWarning` is a warning, not an outcome.
+ValueError, IndexError, MemoryError; FileNotFoundError for a string `render` takes as a path).
+A `ColorRangeWarning` is a warning, not an outcome.
 Prints the number of calls and the outcomes' counts, or "UNEXPECTED ..." and exits 1.
 
 Usage: python tests/scripts/fuzz.py [ROUNDS]  (CALLS calls a round, and `explain` every
@@ -21,8 +22,9 @@ import numpy as np
 
 import glshade as gs
 
-ALLOWED = (TypeError, ValueError, IndexError, MemoryError)
-CALLS = 39  # 38 without pyrender
+# FileNotFoundError: `render` reads a string as a file's path.
+ALLOWED = (TypeError, ValueError, IndexError, MemoryError, FileNotFoundError)
+CALLS = 43  # 42 without pyrender
 # explain renders a few dozen times a call: fuzzed every few rounds, on tiny pictures.
 EXPLAIN_EVERY = 10
 
@@ -141,6 +143,18 @@ def main(rounds: int) -> None:
         attempt("Scene", gs.Scene, lights=pick([*arrays, *extra, *scenes]), viewer=pick(arrays),
                 two_side=option, global_ambient=pick(arrays))  # fmt: skip
         attempt("Camera", gs.Camera.look_at, pick(arrays), near=option, fovy=pick(extra))
+        # Cameras as other libraries give them, and many views in one render.
+        attempt("Camera.from_pose", gs.Camera.from_pose, pick([*arrays, *extra]),
+                fovy=pick(numbers), far=pick([None, *numbers]))  # fmt: skip
+        attempt("Camera.from_opencv", gs.Camera.from_opencv, pick([np.eye(3), *arrays]),
+                pick([np.eye(3), *arrays, *extra]), pick(arrays), pick([8, option]), 8,
+                near=pick(numbers))  # fmt: skip
+        attempt("Camera.orbit", gs.Camera.orbit, pick([1, 3, 0, option]),
+                distance=pick(numbers), elevation=pick(numbers), up=pick(arrays))  # fmt: skip
+        views = [gs.Camera(), gs.Camera.look_at((0, 0, 3))]
+        attempt("render views", gs.render, a, f, scene, pick([views, [], [gs.Camera(), "x"]]),
+                width=8, height=8, lights_in=pick(["world", option]),
+                depth=pick([True, False, option]))  # fmt: skip
         # The world models' records: colours (numbers, bytes, hex), numbers, vectors.
         three, gltf = gs.threejs, gs.gltf
         attempt("gltf.Material", gltf.Material, base_color=pick(colours), metallic=pick(numbers),
