@@ -268,10 +268,14 @@ def bench_caption(data: dict[str, Any], name: str) -> tuple[str, str, str, str]:
     if "compiler" in settings.get("c", {}):
         c = settings["c"]
         notes += f"; C loop: {c['compiler']}, {c['flags']} ({c['threads']} threads)"
-    if "drjit" in settings:
+    # A peer that could not run is recorded as {"unavailable": why}: said so, not read.
+    for peer in ("drjit", "jax"):
+        if "unavailable" in settings.get(peer, {}):
+            notes += f"; {'Dr.Jit' if peer == 'drjit' else 'JAX'} unavailable"
+    if "version" in settings.get("drjit", {}):
         drjit = settings["drjit"]
         notes += f"; Dr.Jit {drjit['version']} (LLVM {drjit['llvm']}, {drjit['threads']} threads)"
-    if "jax" in settings:
+    if "version" in settings.get("jax", {}):
         jax = settings["jax"]
         notes += f"; JAX {jax['version']}, jaxlib {jax['jaxlib']} ({jax['threads']} threads)"
     return command, machine["cpu"], date, notes
