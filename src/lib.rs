@@ -136,6 +136,7 @@ pub use render::camera::{look_at, orthographic, perspective, Camera};
 pub use render::mesh::{Draw, Mesh, Textured};
 pub use render::options::{Provoking, RenderOptions, Shading};
 pub use render::placement::Placement;
+pub use render::points::{render_points, PointShape, PointStyle, MAX_POINT_SIZE};
 pub use render::raster::{Cull, Viewport};
 pub use render::shader::RenderModel;
 pub use render::texture::{Filter, Texels, Texture, Wrap};

@@ -17,6 +17,7 @@ mod gltf;
 mod lean;
 mod model;
 mod normals;
+mod points;
 mod relief;
 mod render;
 mod runtime;
@@ -34,6 +35,8 @@ mod _glshade {
     use super::gltf::GltfScene;
     #[pymodule_export]
     use super::normals::{crease_normals, face_normals, vertex_normals};
+    #[pymodule_export]
+    use super::points::render_points;
     #[pymodule_export]
     use super::relief::{blend, hillshade, shade_normals};
     #[pymodule_export]

@@ -21,6 +21,7 @@ pub mod mesh;
 pub mod options;
 pub mod passes;
 pub mod placement;
+pub mod points;
 pub mod raster;
 pub mod shader;
 pub mod texture;

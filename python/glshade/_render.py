@@ -16,6 +16,7 @@ from ._camera import Camera
 from ._image import Image
 from ._intake import choice, color, flag, integer, one_of, rgba, transform, warn_if_bytes
 from ._normals import face_normals, vertex_normals
+from ._points import is_point_cloud, render_points
 from ._pyrender import is_pyrender_scene, render_pyrender
 from ._render_input import render_input
 from ._scenes import AnyScene
@@ -108,6 +109,8 @@ def render(
     uv: ArrayLike | None = None,
     texture_filter: str = "linear",
     texture_wrap: str | tuple[str, str] = "repeat",
+    point_size: float = 1.0,
+    point_shape: str = "square",
     depth: bool = False,
 ) -> Image | FloatArray | tuple[Image | FloatArray, FloatArray]:
     """Render a triangle mesh the way OpenGL does, lit by the lighting equation of `shade`.
@@ -242,6 +245,20 @@ def render(
         no mipmaps: where a texture is minified, pyrender's trilinear mipmapping differs.
     texture_wrap : {"repeat", "mirrored_repeat", "clamp_to_edge"}, or a pair (s, t)
         What coordinates outside [0, 1] read, GL's wrap modes (glTF's default: repeat).
+    point_size : float
+        For points (`vertices` an (n, 3) array or a ``trimesh.PointCloud``, no `faces`): the
+        side of each point's square in pixels, in (0, 255], as ``gl_PointSize``. Points are
+        drawn as GL draws ``GL_POINTS`` without smoothing: the pixels whose centres lie in the
+        square centred on the point's window position (Mesa's rule at the edges), at its depth,
+        depth-tested; a point whose centre is outside the view volume is not drawn. With
+        `normals` (one per point) they are lit by `scene` at their vertices, as GL lights a
+        point (the front material); without, drawn in `colors` (a point cloud's own, else
+        white) and no scene may be given. `shading`, `cull`, `texture` and the provoking
+        vertex do not apply.
+    point_shape : {"square", "round"}
+        GL's square, or the disc of the same diameter (the pixels whose centres are within
+        half the size of the point: a fragment shader's ``discard`` outside
+        ``gl_PointCoord``'s circle).
     depth : bool
         Also return the depth buffer.
 
@@ -301,6 +318,20 @@ def render(
     encoding = transfer_name("linear" if transfer is None else transfer)
     if isinstance(vertices, (str, os.PathLike)):
         vertices = load(vertices)
+    gl_options = {
+        "color_material": (color_material, None),
+        "color_material_face": (color_material_face, "front_and_back"),
+        "normalize": (normalize, True), "rescale_normal": (rescale_normal, False),
+    }  # fmt: skip
+    if is_point_cloud(vertices, faces):
+        if texture is not None or uv is not None:
+            raise TypeError("points take no texture or uv: they are drawn in one colour each")
+        return render_points(
+            vertices, (faces, scene, camera), width=w, height=h, normals=normals,
+            colors=colors, point_size=point_size, point_shape=point_shape,
+            gl_options=gl_options, model=model, background=background, lights_in=lights_in,
+            encoding=encoding, clamp=clamp, depth=flag(depth, "depth"),
+        )  # fmt: skip
     views, (faces, scene, camera) = _views((faces, scene, camera))
     given = render_input(
         vertices,
@@ -319,11 +350,6 @@ def render(
         uv=uv,
     )
     v, f, n, c, lens = given.vertices, given.faces, given.normals, given.colors, given.camera
-    gl_options = {
-        "color_material": (color_material, None),
-        "color_material_face": (color_material_face, "front_and_back"),
-        "normalize": (normalize, True), "rescale_normal": (rescale_normal, False),
-    }  # fmt: skip
     gl = given.scene._gl_options(gl_options, colors=c is not None)
     if cull is None:
         cull = cast(Cull | None, given.scene._default_cull())

@@ -45,6 +45,8 @@ class RenderOptions(SharedRenderOptions, total=False):
     uv: ArrayLike | None
     texture_filter: str
     texture_wrap: str | tuple[str, str]
+    point_size: float
+    point_shape: str
 
 
 def shared_defaults(

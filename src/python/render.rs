@@ -25,7 +25,7 @@ use crate::render::texture::{Filter, Texels, Texture, Wrap};
 use crate::render::transfer::Transfer;
 
 /// A render's image and depth, of the vertices' dtype.
-type Rendered<'py> = PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)>;
+pub type Rendered<'py> = PyResult<(Bound<'py, PyAny>, Bound<'py, PyAny>)>;
 
 /// A texture's values read in place, of the type the caller stores them in.
 enum TexelArray<'py> {
@@ -344,7 +344,7 @@ impl<'py> OnModel for RenderWork<'_, 'py> {
 }
 
 /// The camera of `view` and `projection`.
-fn camera(
+pub fn camera(
     view: &PyReadonlyArray2<'_, f64>,
     projection: &PyReadonlyArray2<'_, f64>,
 ) -> PyResult<Camera> {
@@ -352,6 +352,54 @@ fn camera(
         view: matrix(view, "view")?,
         projection: matrix(projection, "projection")?,
     })
+}
+
+/// The options of a frame that `render` and `render_points` share, as the binding takes them.
+pub struct Frame<'a, 'py> {
+    /// The image's width in pixels.
+    pub width: usize,
+    /// Its height.
+    pub height: usize,
+    /// The model matrix, (4, 4).
+    pub model: &'a PyReadonlyArray2<'py, f64>,
+    /// The clear colour, four values, encoded.
+    pub background: &'a PyReadonlyArray1<'py, f64>,
+    /// The transfer's name.
+    pub transfer: &'a str,
+    /// GL's clamp of the colours.
+    pub clamp: bool,
+    /// GL's colour-material mode, if any.
+    pub color_material: Option<&'a str>,
+    /// The faces it applies to.
+    pub color_material_face: &'a str,
+    /// `GL_NORMALIZE`.
+    pub normalize: bool,
+    /// `GL_RESCALE_NORMAL`.
+    pub rescale_normal: bool,
+}
+
+impl Frame<'_, '_> {
+    /// The render options of these, the others at their defaults.
+    pub fn options(&self) -> PyResult<RenderOptions> {
+        Ok(RenderOptions {
+            viewport: Viewport {
+                width: self.width,
+                height: self.height,
+            },
+            model: matrix(self.model, "model")?,
+            background: background(self.background)?,
+            transfer: Transfer::parse(self.transfer).map_err(to_pyerr)?,
+            normalize: self.normalize,
+            rescale_normal: self.rescale_normal,
+            color_material: self
+                .color_material
+                .map(|mode| ColorMaterial::parse(mode, self.color_material_face))
+                .transpose()
+                .map_err(to_pyerr)?,
+            clamp: ColorClamp::from(self.clamp),
+            ..RenderOptions::default()
+        })
+    }
 }
 
 /// The background colour, four values.
@@ -406,21 +454,23 @@ pub fn render<'py>(
     rescale_normal: bool,
 ) -> Rendered<'py> {
     let texture = TextureArgs::parse(texture, uv, texture_filter, &texture_wrap)?;
+    let frame = Frame {
+        width,
+        height,
+        model: &model,
+        background: &background,
+        transfer,
+        clamp,
+        color_material,
+        color_material_face,
+        normalize,
+        rescale_normal,
+    };
     let options = RenderOptions {
-        viewport: Viewport { width, height },
         shading: Shading::parse(shading).map_err(to_pyerr)?,
         provoking: Provoking::parse(provoking_vertex).map_err(to_pyerr)?,
         cull: Cull::parse(cull).map_err(to_pyerr)?,
-        model: matrix(&model, "model")?,
-        background: self::background(&background)?,
-        transfer: Transfer::parse(transfer).map_err(to_pyerr)?,
-        normalize,
-        rescale_normal,
-        color_material: color_material
-            .map(|mode| ColorMaterial::parse(mode, color_material_face))
-            .transpose()
-            .map_err(to_pyerr)?,
-        clamp: ColorClamp::from(clamp),
+        ..frame.options()?
     };
     let draw = DrawArgs {
         vertices,

@@ -24,7 +24,7 @@ import glshade as gs
 
 # FileNotFoundError: `render` reads a string as a file's path.
 ALLOWED = (TypeError, ValueError, IndexError, MemoryError, FileNotFoundError)
-CALLS = 43  # 42 without pyrender
+CALLS = 44  # 43 without pyrender
 # explain renders a few dozen times a call: fuzzed every few rounds, on tiny pictures.
 EXPLAIN_EVERY = 10
 
@@ -151,6 +151,9 @@ def main(rounds: int) -> None:
                 near=pick(numbers))  # fmt: skip
         attempt("Camera.orbit", gs.Camera.orbit, pick([1, 3, 0, option]),
                 distance=pick(numbers), elevation=pick(numbers), up=pick(arrays))  # fmt: skip
+        attempt("render points", gs.render, a, None, pick([None, scene]), gs.Camera(),
+                width=8, height=8, normals=pick([None, b]), colors=c,
+                point_size=pick([1, 3, *numbers]), point_shape=pick(["round", option]))  # fmt: skip
         views = [gs.Camera(), gs.Camera.look_at((0, 0, 3))]
         attempt("render views", gs.render, a, f, scene, pick([views, [], [gs.Camera(), "x"]]),
                 width=8, height=8, lights_in=pick(["world", option]),

@@ -14,7 +14,7 @@ from support.processes import passes
 pytestmark = pytest.mark.subprocess
 
 ROUNDS = 600
-CALLS = 43  # a round's calls, pyrender's render among them
+CALLS = 44  # a round's calls, pyrender's render among them
 EXPLAIN_EVERY = 10
 
 
