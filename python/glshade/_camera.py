@@ -42,6 +42,15 @@ def _aspect(value: float | None) -> float | None:
     return a
 
 
+def is_camera_list(value: object) -> bool:
+    """A non-empty list or tuple of `Camera` (the views of one `render` call)."""
+    return (
+        isinstance(value, (list, tuple))
+        and bool(value)
+        and all(isinstance(c, Camera) for c in value)
+    )
+
+
 class Camera:
     """Where the mesh is seen from and how it is projected: GL's view and projection matrices.
 

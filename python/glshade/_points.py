@@ -10,7 +10,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._camera import Camera
+from ._camera import Camera, is_camera_list
 from ._framing import frame
 from ._image import Image
 from ._intake import color_values, flag, number, one_of, rgba, rows, transform, vertex_colors
@@ -25,18 +25,12 @@ __all__ = ["is_point_cloud", "render_points"]
 SHAPES = ("square", "round")
 
 
-def _is_cameras(value: Any) -> bool:
-    return isinstance(value, (list, tuple)) and bool(value) and all(
-        isinstance(c, Camera) for c in value
-    )  # fmt: skip
-
-
 def is_point_cloud(vertices: Any, faces: Any) -> bool:
     """Whether `render` was given points: an object with ``.vertices`` and no ``.faces`` (a
     ``trimesh.PointCloud``), or an (n, 3) array-like, with no faces (None, or the scene or
     camera in their place)."""
     if faces is not None and not (
-        is_scene(faces) or isinstance(faces, Camera) or _is_cameras(faces)
+        is_scene(faces) or isinstance(faces, Camera) or is_camera_list(faces)
     ):
         return False
     if hasattr(vertices, "vertices") and not hasattr(vertices, "faces"):
@@ -54,7 +48,7 @@ def _scene_and_camera(given: tuple[Any, ...]) -> tuple[Any, Any]:
             continue
         if is_scene(value) and scene is None and camera is None:
             scene = value
-        elif (isinstance(value, Camera) or _is_cameras(value)) and camera is None:
+        elif (isinstance(value, Camera) or is_camera_list(value)) and camera is None:
             camera = value
         else:
             raise TypeError(

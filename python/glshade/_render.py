@@ -12,7 +12,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from . import _glshade
-from ._camera import Camera
+from ._camera import Camera, is_camera_list
 from ._image import Image
 from ._intake import choice, color, flag, integer, one_of, rgba, transform, warn_if_bytes
 from ._normals import face_normals, vertex_normals
@@ -409,7 +409,7 @@ def _views(slots: tuple[Any, Any, Any]) -> tuple[list[Camera] | None, tuple[Any,
     `scene` and `camera` places the call form puts a camera), and the places with the first
     camera in its stead; None and the places as they are for a call of one camera."""
     for place, value in enumerate(slots):
-        if isinstance(value, (list, tuple)) and value and all(isinstance(c, Camera) for c in value):
+        if is_camera_list(value):
             changed = list(slots)
             changed[place] = value[0]
             return list(value), (changed[0], changed[1], changed[2])
