@@ -11,7 +11,7 @@ from numpy.typing import ArrayLike
 
 from . import _glshade
 from ._camera import Camera, is_camera_list
-from ._framing import frame
+from ._framing import default_scene, frame
 from ._image import Image
 from ._intake import color_values, flag, number, one_of, rgba, rows, transform, vertex_colors
 from ._model import is_scene
@@ -100,8 +100,6 @@ def render_points(
     cameras = camera if isinstance(camera, (list, tuple)) else [camera]
     space = one_of(lights_in, "lights_in", ("eye", "world"))
     if scene is None:
-        from ._framing import default_scene
-
         scene, space = default_scene(), "world"
     gl = scene._gl_options(gl_options, colors=c is not None and n is not None)
     clear = apply_transfer(np.array([rgba(background, "background")], dtype=v.dtype), encoding)

@@ -13,7 +13,7 @@ use glam::DVec4;
 
 use crate::errors::error::Error;
 use crate::errors::stop::Stop;
-use crate::memory::alloc::count;
+use crate::memory::alloc::{count, try_collect};
 use crate::memory::pages::Zeroed;
 use crate::memory::uninit::as_uninit;
 use crate::numbers::real::Real;
@@ -137,7 +137,7 @@ fn colours<T: Real, M: RenderModel>(
                 rgba
             }
         };
-        return Ok((0..n).map(colour).collect());
+        return try_collect((0..n).map(colour), "the point colours");
     };
     let shader = Shader::new(scene, camera, options, false)?;
     let len = count(&[shader.outputs(), n, 4], "the point colours")?;
@@ -149,9 +149,10 @@ fn colours<T: Real, M: RenderModel>(
         as_uninit(&mut out),
         stop,
     )?;
-    Ok((0..n)
-        .map(|i| shader.fragment(true, clamp, None, |plane| shaded(&out, n, plane, i)))
-        .collect())
+    try_collect(
+        (0..n).map(|i| shader.fragment(true, clamp, None, |plane| shaded(&out, n, plane, i))),
+        "the point colours",
+    )
 }
 
 /// Draws `points` (their vertices, with one normal each to be lit, or without to be drawn in

@@ -2,7 +2,8 @@
 "MemoryError <message>", or nothing if the call succeeded.
 
 Usage: python tests/scripts/allocation.py CASE, one of shade, shade-exact, shade-gltf,
-shade-threejs, vertex_normals, face_normals, crease_normals, render, render-gltf, relief
+shade-threejs, vertex_normals, face_normals, crease_normals, render, render-gltf,
+render-views, render-points, relief
 """
 
 from __future__ import annotations
@@ -47,6 +48,13 @@ def prepare(case: str) -> Callable[[], object]:
         t = np.array([[-1, -1, 0], [1, -1, 0], [0, 1, 0.0]])
         scene = gs.Scene() if case == "render" else gs.gltf.Scene(gs.gltf.PointLight())
         return lambda: gs.render(t, [[0, 1, 2]], scene, gs.Camera(), width=16384, height=16384)
+    if case == "render-views":  # two frames of 16384²: the outputs do not fit
+        t = np.array([[-1, -1, 0], [1, -1, 0], [0, 1, 0.0]])
+        views = [gs.Camera(), gs.Camera()]
+        return lambda: gs.render(t, [[0, 1, 2]], gs.Scene(), views, width=16384, height=16384)
+    if case == "render-points":
+        dots = np.zeros((3, 3))
+        return lambda: gs.render(dots, None, None, gs.Camera(), width=16384, height=16384)
     raise SystemExit(f"unknown case {case!r}")
 
 

@@ -33,6 +33,8 @@ CALLS: list[Callable[[], Any]] = [
     lambda: gs.render(v, f, scene, gs.Camera(), width=64, height=64),
     lambda: gs.render(v, f, gltf, gs.Camera(), width=64, height=64),
     lambda: gs.render(v, f, threejs, gs.Camera(), width=64, height=64),
+    lambda: gs.render(v, f, scene, gs.Camera.orbit(3), width=32, height=32),
+    lambda: gs.render(v, None, scene, gs.Camera(), normals=v, point_size=3, width=64, height=64),
     lambda: gs.relief.LightSource().hillshade(elevation),
 ]
 

@@ -2,7 +2,8 @@
 "interrupted <seconds after the signal>" or "finished <seconds>".
 
 Usage: python tests/scripts/interrupt.py CASE, one of shade, shade-out, shade-gltf, shade-threejs,
-vertex_normals, face_normals, crease_normals, render, render-gltf, render-threejs, relief
+vertex_normals, face_normals, crease_normals, render, render-gltf, render-threejs,
+render-views, render-points, relief
 """
 
 from __future__ import annotations
@@ -70,6 +71,18 @@ def prepare(case: str) -> Callable[[], object]:
             lit = gs.threejs.Scene([gs.threejs.PointLight(position=(1, 2, 3))] * 64)
         camera = gs.Camera()
         return lambda: gs.render(m.vertices * 0.8, m.faces, lit, camera, width=4096, height=4096)
+    if case == "render-views":
+        import trimesh
+
+        m = trimesh.creation.icosphere(5)
+        views = gs.Camera.orbit(8, distance=3.0)
+        lit = gs.Scene(lights=[spot] * 64, material=shiny)
+        return lambda: gs.render(m.vertices, m.faces, lit, views, width=4096, height=4096)
+    if case == "render-points":
+        points = rng.normal(size=(8_000_000, 3)) * 0.5
+        lit = gs.Scene(lights=[spot] * 64, material=shiny)
+        return lambda: gs.render(points, None, lit, gs.Camera(), normals=points, point_size=8,
+                                 width=4096, height=4096)  # fmt: skip
     raise SystemExit(f"unknown case {case!r}")
 
 

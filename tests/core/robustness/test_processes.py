@@ -12,7 +12,8 @@ pytestmark = pytest.mark.subprocess
 
 # Every O(n) call: each model's shade and render, the normals, relief.
 CALLS = ["shade", "shade-exact", "shade-gltf", "shade-threejs", "vertex_normals", "face_normals",
-         "crease_normals", "render", "render-gltf", "relief"]  # fmt: skip
+         "crease_normals", "render", "render-gltf", "render-views", "render-points",
+         "relief"]  # fmt: skip
 
 
 def test_a_fork_pool_after_the_parent_shaded_returns_the_parents_results() -> None:
@@ -77,7 +78,8 @@ def test_faces_changed_by_another_thread_never_panic() -> None:
 @pytest.mark.parametrize(
     "case",
     ["shade", "shade-out", "shade-gltf", "shade-threejs", "vertex_normals", "face_normals",
-     "crease_normals", "render", "render-gltf", "render-threejs", "relief"],
+     "crease_normals", "render", "render-gltf", "render-threejs", "render-views",
+     "render-points", "relief"],
 )  # fmt: skip
 def test_ctrl_c_interrupts_a_long_call_within_half_a_second(case: str) -> None:
     out = passes("interrupt", case, timeout=240)
